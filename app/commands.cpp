@@ -1,0 +1,317 @@
+#include "app/commands.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "analysis/polish.hpp"
+#include "constructors/catalogue.hpp"
+#include "constructors/registry.hpp"
+#include "core/conventions.hpp"
+#include "core/io.hpp"
+
+namespace tripack::app {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+Catalogue load_catalogue(const GlobalOptions& g) {
+  return Catalogue::load(g.catalogue.empty() ? Catalogue::default_path() : g.catalogue);
+}
+
+// One pass of the pipeline as far as this release goes: construct, then polish.
+struct Built {
+  Pattern pattern;
+  PolishReport polish;
+  bool polished = false;
+  double t_construct = 0, t_polish = 0;
+  std::optional<long long> bonds_expected, rattlers_expected;
+};
+
+Built run_build(const Catalogue& cat, const BuildRequest& req, bool polish) {
+  Built b;
+  auto t0 = Clock::now();
+  b.pattern = build_pattern(cat, req);
+  b.t_construct = seconds_since(t0);
+  if (polish) {
+    t0 = Clock::now();
+    b.polish = polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
+    b.t_polish = seconds_since(t0);
+    b.polished = true;
+    if (!b.polish.converged)
+      throw std::runtime_error(fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
+                                           static_cast<double>(b.polish.max_residual), b.polish.iterations));
+  }
+  const auto& c = cat.find(b.pattern.provenance.class_id);
+  const auto& pv = b.pattern.provenance;
+  b.bonds_expected = c.rigid ? cat.bonds_of(c, pv.k, pv.p, pv.variant) : std::nullopt;
+  b.rattlers_expected = cat.rattlers_of(c, pv.k, pv.p, pv.variant);
+  return b;
+}
+
+std::string member_name(const Provenance& pv) {
+  std::string s = pv.class_id + " k=" + std::to_string(pv.k);
+  if (pv.p) s += " p=" + std::to_string(pv.p);
+  if (!pv.variant.empty()) s += " variant=" + pv.variant;
+  return s;
+}
+
+std::string count_vs(std::size_t got, const std::optional<long long>& expected) {
+  if (!expected) return std::to_string(got);
+  return fmt::format("{} (catalogue: {}{})", got, *expected,
+                     static_cast<long long>(got) == *expected ? "" : ", MISMATCH");
+}
+
+void print_build(const Built& b, int digits) {
+  const auto& pk = b.pattern.packing;
+  const long long n = static_cast<long long>(pk.size());
+  const long double L = 1.0L / pk.d;
+  std::cout << fmt::format("{:<10} {}\n", "class", member_name(b.pattern.provenance));
+  std::cout << fmt::format("{:<10} {}\n", "n", n);
+  std::cout << fmt::format("{:<10} {}\n", "d", format_significant(pk.d, digits));
+  std::cout << fmt::format("{:<10} {}\n", "L", format_significant(L, digits));
+  std::cout << fmt::format("{:<10} {}\n", "delta(n)", format_significant(oler_delta(n, L), 15));
+  std::cout << fmt::format("{:<10} {}\n", "bonds", count_vs(b.pattern.bonds.size(), b.bonds_expected));
+  std::cout << fmt::format("{:<10} {}\n", "rattlers", count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
+  if (b.polished)
+    std::cout << fmt::format("{:<10} max residual {:.2g} (disk units), {} iterations, rank {}/{}, {} equations\n",
+                             "polish", static_cast<double>(b.polish.max_residual), b.polish.iterations,
+                             b.polish.rank, b.polish.unknowns, b.polish.equations);
+  std::cout << fmt::format("{:<10} construct {:.3f} ms, polish {:.3f} ms\n", "time",
+                           b.t_construct * 1e3, b.t_polish * 1e3);
+}
+
+nlohmann::json build_json(const Built& b) {
+  const auto& pk = b.pattern.packing;
+  const auto& pv = b.pattern.provenance;
+  const long long n = static_cast<long long>(pk.size());
+  const long double L = 1.0L / pk.d;
+  nlohmann::json j;
+  j["class"] = pv.class_id;
+  j["k"] = pv.k;
+  j["p"] = pv.p ? nlohmann::json(pv.p) : nlohmann::json(nullptr);
+  j["variant"] = pv.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(pv.variant);
+  j["n"] = n;
+  j["d"] = format_significant(pk.d, 17);
+  j["L"] = format_significant(L, 17);
+  j["delta"] = static_cast<double>(oler_delta(n, L));
+  j["bonds"] = b.pattern.bonds.size();
+  j["rattlers"] = b.pattern.rattlers.size();
+  j["seconds"] = b.t_construct + b.t_polish;
+  j["stage_seconds"] = {{"construct", b.t_construct}, {"polish", b.t_polish}};
+  if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);
+  return j;
+}
+
+std::pair<long, long> parse_range(const std::string& s) {
+  auto to_long = [&](const std::string& t) {
+    std::size_t used = 0;
+    long v = 0;
+    try {
+      v = std::stol(t, &used);
+    } catch (...) {
+      used = 0;
+    }
+    if (used == 0 || used != t.size()) throw std::invalid_argument("--k expects K or A..B, got '" + s + "'");
+    return v;
+  };
+  const auto dots = s.find("..");
+  if (dots == std::string::npos) {
+    const long k = to_long(s);
+    return {k, k};
+  }
+  const long a = to_long(s.substr(0, dots)), b = to_long(s.substr(dots + 2));
+  if (b < a) throw std::invalid_argument("--k range " + s + " is empty");
+  return {a, b};
+}
+
+}  // namespace
+
+int cmd_classes(const GlobalOptions& g, bool json) {
+  const Catalogue cat = load_catalogue(g);
+  if (json) {
+    nlohmann::json arr = nlohmann::json::array();
+    for (const auto& c : cat.classes()) {
+      nlohmann::json j{{"id", c.id}, {"display", c.display}, {"n", c.n.text()}, {"k_min", c.k_min},
+                       {"builder", c.builder}};
+      if (c.k_max) j["k_max"] = c.k_max;
+      if (c.has_p) j["p_min"] = c.p_min;
+      if (!c.L.empty()) j["L"] = c.L.text();
+      if (!c.bonds.empty()) j["bonds"] = c.bonds.text();
+      if (!c.rattlers.empty()) j["rattlers"] = c.rattlers.text();
+      nlohmann::json vs = nlohmann::json::array();
+      for (const auto& v : c.variants) vs.push_back(v.id);
+      j["variants"] = vs;
+      j["claim"] = {{"status", c.claim_status}, {"best", c.claim_best}, {"tight", c.claim_tight},
+                    {"source", c.claim_source}};
+      arr.push_back(j);
+    }
+    std::cout << arr.dump(1) << "\n";
+    return 0;
+  }
+  std::cout << fmt::format("{:<20} {:<42} {:<8} {:<28} {}\n", "id", "n", "k", "L", "claim");
+  for (const auto& c : cat.classes()) {
+    std::string kr = (c.has_p ? "p>=" + std::to_string(c.p_min) + "," : "") + "k>=" + std::to_string(c.k_min);
+    if (c.k_max) kr = std::to_string(c.k_min) + ".." + std::to_string(c.k_max);
+    std::string claim = c.claim_status;
+    if (!c.claim_best.empty() && c.claim_best != "true") claim += ", best " + c.claim_best;
+    std::cout << fmt::format("{:<20} {:<42} {:<8} {:<28} {}\n", c.id, c.display, kr,
+                             c.L.empty() ? "(contact system)" : c.L.text(), claim);
+    if (!c.variants.empty()) {
+      std::string vs;
+      for (const auto& v : c.variants) vs += (vs.empty() ? "" : ", ") + v.id;
+      std::cout << fmt::format("{:<20}   variants: {}\n", "", vs);
+    }
+  }
+  return 0;
+}
+
+int cmd_classify(const GlobalOptions& g, long long n, bool json) {
+  const Catalogue cat = load_catalogue(g);
+  const auto members = cat.classify(n);
+  if (members.empty()) throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
+  if (json) {
+    nlohmann::json arr = nlohmann::json::array();
+    for (const auto& m : members) {
+      nlohmann::json j{{"class", m.cls->id}, {"k", m.k}};
+      if (m.cls->has_p) j["p"] = m.p;
+      arr.push_back(j);
+    }
+    std::cout << arr.dump() << "\n";
+    return 0;
+  }
+  for (const auto& m : members) {
+    std::cout << m.cls->id;
+    if (m.cls->has_p) std::cout << " p=" << m.p;
+    std::cout << " k=" << m.k << "   (" << m.cls->display << ")\n";
+  }
+  return 0;
+}
+
+int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
+  const Catalogue cat = load_catalogue(g);
+  Built best;
+  if (o.n) {
+    if (!o.class_id.empty() || o.k || o.p)
+      throw std::invalid_argument("build --n N takes no class, --k or --p");
+    const auto members = cat.classify(o.n);
+    if (members.empty()) throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(o.n));
+    bool have = false;
+    for (const auto& m : members) {
+      Built b = run_build(cat, {m.cls->id, m.k, m.p, ""}, o.polish);
+      if (!o.json)
+        std::cerr << fmt::format("candidate {:<40} d = {}\n", member_name(b.pattern.provenance),
+                                 format_significant(b.pattern.packing.d, o.digits));
+      if (!have || b.pattern.packing.d > best.pattern.packing.d) { best = std::move(b); have = true; }
+    }
+  } else {
+    if (o.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
+    if (o.k == 0) throw std::invalid_argument("build needs --k K");
+    best = run_build(cat, {o.class_id, o.k, o.p, o.variant}, o.polish);
+  }
+  if (!o.output.empty()) write_pattern(o.output, best.pattern);
+  if (o.json) std::cout << build_json(best).dump() << "\n";
+  else print_build(best, o.digits);
+  return 0;
+}
+
+int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
+  const Catalogue cat = load_catalogue(g);
+  const ClassInfo& c = cat.find(o.class_id);
+  const auto [k0, k1] = parse_range(o.k_range);
+  // A double-rounded closed form and a polished bond system agree to a few ulps of L; 1e-14
+  // relative leaves room for the long double chain functions and rounding of d.
+  constexpr long double kTol = 1e-14L;
+  bool all_ok = true;
+  if (!o.json)
+    std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}\n", "k", "n", "variant",
+                             "d built", "d formula", "rel.diff", "bonds", "source");
+  for (long k = k0; k <= k1; ++k) {
+    cat.check_parameters(c, k, o.p);
+    std::vector<std::string> variants = cat.variants_at(c, k);
+    if (variants.empty()) variants.push_back("");
+    for (const auto& v : variants) {
+      const Built b = run_build(cat, {c.id, k, o.p, v}, true);
+      const Expression* exact = cat.exact_L_of(c, k, o.p);
+      std::optional<long double> L;
+      std::string source;
+      if (exact) {
+        L = exact->eval<long double>(real_env(k, o.p));
+        source = "closed form " + exact->text();
+      } else if (auto lf = cat.L_of(c, k, o.p)) {
+        L = lf;
+        source = "chain formula " + c.L.text();
+      }
+      const long double d = b.pattern.packing.d;
+      const long double rel = L ? std::fabs(d * *L - 1) : NAN;
+      const bool bonds_ok = !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+      const bool ok = (!L || rel <= kTol) && bonds_ok;
+      all_ok = all_ok && ok;
+      if (o.json) {
+        nlohmann::json j{{"class", c.id}, {"k", k}, {"n", b.pattern.packing.size()},
+                         {"d_built", format_significant(d, 17)},
+                         {"d_formula", L ? format_significant(1 / *L, 17) : ""},
+                         {"relative_difference", L ? static_cast<double>(rel) : -1.0},
+                         {"bonds", b.pattern.bonds.size()}, {"ok", ok}, {"source", source}};
+        if (o.p) j["p"] = o.p;
+        if (!v.empty()) j["variant"] = v;
+        std::cout << j.dump() << "\n";
+      } else {
+        std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10.2e} {:>10} {}{}\n", k,
+                                 b.pattern.packing.size(), v, format_significant(d, 17),
+                                 L ? format_significant(1 / *L, 17) : "-", static_cast<double>(rel),
+                                 count_vs(b.pattern.bonds.size(), b.bonds_expected), source,
+                                 ok ? "" : "  FAIL");
+      }
+    }
+  }
+  if (!all_ok) {
+    std::cerr << "tripack: error: check-formula found mismatches\n";
+    return 1;
+  }
+  return 0;
+}
+
+int cmd_table(const GlobalOptions& g, long k_max) {
+  const Catalogue cat = load_catalogue(g);
+  std::cout << fmt::format("{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10} {:>6} {:>4} {:>9} {:>8}\n",
+                           "class", "p", "k", "variant", "n", "d", "L", "delta", "bonds", "ratt",
+                           "residual", "ms");
+  bool all_ok = true;
+  for (const auto& c : cat.classes()) {
+    const long p_count = c.has_p ? 3 : 1;
+    for (long pi = 0; pi < p_count; ++pi) {
+      const long p = c.has_p ? c.p_min + pi : 0;
+      for (long k = c.k_min; k < c.k_min + k_max && (!c.k_max || k <= c.k_max); ++k) {
+        std::vector<std::string> variants = cat.variants_at(c, k);
+        if (variants.empty()) variants.push_back("");
+        for (const auto& v : variants) {
+          const auto t0 = Clock::now();
+          const Built b = run_build(cat, {c.id, k, p, v}, true);
+          const double ms = seconds_since(t0) * 1e3;
+          const auto& pk = b.pattern.packing;
+          const long long n = static_cast<long long>(pk.size());
+          const bool ok = !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+          all_ok = all_ok && ok;
+          std::cout << fmt::format("{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10.6f} {:>6} {:>4} {:>9.1e} {:>8.2f}{}\n",
+                                   c.id, p ? std::to_string(p) : "", k, v, n, format_significant(pk.d, 15),
+                                   format_significant(1 / pk.d, 15),
+                                   static_cast<double>(oler_delta(n, 1 / pk.d)), b.pattern.bonds.size(),
+                                   b.pattern.rattlers.size(), static_cast<double>(b.polish.max_residual), ms,
+                                   ok ? "" : "  bond count differs from the catalogue");
+        }
+      }
+    }
+  }
+  return all_ok ? 0 : 1;
+}
+
+}  // namespace tripack::app

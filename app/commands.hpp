@@ -1,0 +1,38 @@
+// The tripack subcommands. Each returns the process exit code; errors are thrown as exceptions
+// and turned into one line by main().
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace tripack::app {
+
+struct GlobalOptions {
+  std::string catalogue;  // empty: Catalogue::default_path()
+};
+
+struct BuildOptions {
+  std::string class_id;
+  long k = 0, p = 0;
+  long long n = 0;  // --n: choose the best builder for n
+  std::string variant;
+  int digits = 15;
+  std::string output;  // -o FILE
+  bool json = false;
+  bool polish = true;
+};
+
+struct CheckFormulaOptions {
+  std::string class_id;
+  std::string k_range;  // "A..B" or "K"
+  long p = 0;
+  bool json = false;
+};
+
+int cmd_classes(const GlobalOptions& g, bool json);
+int cmd_classify(const GlobalOptions& g, long long n, bool json);
+int cmd_build(const GlobalOptions& g, const BuildOptions& o);
+int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o);
+int cmd_table(const GlobalOptions& g, long k_max);
+
+}  // namespace tripack::app

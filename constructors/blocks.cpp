@@ -1,0 +1,110 @@
+#include "constructors/blocks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/neighbours.hpp"
+
+namespace tripack {
+
+int DiskUnitsPattern::add_triangle(const Vec2L& corner, const Vec2L& a, const Vec2L& b, long k) {
+  const int first = static_cast<int>(pts_.size());
+  for (long i = 0; i < k; ++i)
+    for (long j = 0; i + j < k; ++j)
+      pts_.push_back(corner + a * static_cast<long double>(i) + b * static_cast<long double>(j));
+  return first;
+}
+
+long DiskUnitsPattern::index_in_triangle(long k, long i, long j) {
+  // Rows of constant i hold k - i disks.
+  return i * k - i * (i - 1) / 2 + j;
+}
+
+namespace {
+
+// Clearance of a disk at p: distance to the nearest other centre minus 1, or to the nearest side.
+long double clearance(const Vec2L& p, const std::vector<Vec2L>& neighbours, long double L) {
+  long double c = std::numeric_limits<long double>::infinity();
+  for (const auto& q : neighbours) c = std::min(c, norm(p - q) - 1);
+  for (Side s : kSides) c = std::min(c, wall_distance(p, s, L));
+  return c;
+}
+
+// Compass search for the point of largest clearance near p: the cage's centre. Cheap (a few
+// hundred evaluations over a handful of neighbours) and robust to the non-smooth max-min.
+Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double L) {
+  long double best = clearance(p, neighbours, L);
+  long double h = 0.25L;
+  static const Vec2L dirs[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1},
+                                {0.7071067811865475L, 0.7071067811865475L},
+                                {-0.7071067811865475L, 0.7071067811865475L},
+                                {0.7071067811865475L, -0.7071067811865475L},
+                                {-0.7071067811865475L, -0.7071067811865475L}};
+  while (h > 1e-13L) {
+    bool moved = false;
+    for (const auto& d : dirs) {
+      const Vec2L t = p + d * h;
+      const long double c = clearance(t, neighbours, L);
+      if (c > best) { best = c; p = t; moved = true; }
+    }
+    if (!moved) h /= 2;
+  }
+  return p;
+}
+
+}  // namespace
+
+Pattern DiskUnitsPattern::finish(Provenance provenance) {
+  const std::size_t n = pts_.size();
+  std::sort(rattlers_.begin(), rattlers_.end());
+  std::vector<char> is_rattler(n, 0);
+  for (int r : rattlers_) is_rattler[static_cast<std::size_t>(r)] = 1;
+
+  // Rattlers: gather neighbours within reach of each cage and centre the rattler in it.
+  if (!rattlers_.empty()) {
+    std::vector<std::vector<int>> near(n);
+    for_each_pair_within(pts_, 2.5L, [&](int i, int j, long double) {
+      if (is_rattler[static_cast<std::size_t>(i)]) near[static_cast<std::size_t>(i)].push_back(j);
+      if (is_rattler[static_cast<std::size_t>(j)]) near[static_cast<std::size_t>(j)].push_back(i);
+    });
+    for (int r : rattlers_) {
+      std::vector<Vec2L> nb;
+      for (int j : near[static_cast<std::size_t>(r)]) nb.push_back(pts_[static_cast<std::size_t>(j)]);
+      pts_[static_cast<std::size_t>(r)] = centre_in_cage(pts_[static_cast<std::size_t>(r)], nb, L_);
+      const long double c = clearance(pts_[static_cast<std::size_t>(r)], nb, L_);
+      if (!(c > 1e-6L))
+        throw std::runtime_error("rattler " + std::to_string(r) + " has no room in its cage");
+    }
+  }
+
+  // Validity: no overlap, every centre inside.
+  long double worst_overlap = 0;
+  for_each_pair_within(pts_, 1.0L, [&](int, int, long double dist) {
+    worst_overlap = std::max(worst_overlap, 1 - dist);
+  });
+  if (worst_overlap > kBondTolerance)
+    throw std::runtime_error("constructed pattern overlaps by " + std::to_string(static_cast<double>(worst_overlap)));
+  for (const auto& p : pts_)
+    for (Side s : kSides)
+      if (wall_distance(p, s, L_) < -kBondTolerance)
+        throw std::runtime_error("constructed pattern has a centre outside the triangle");
+
+  Pattern out;
+  out.bonds = explicit_bonds_ ? bonds_ : find_contacts(pts_, L_, kBondTolerance, is_rattler);
+  std::sort(out.bonds.begin(), out.bonds.end());
+  out.rattlers = rattlers_;
+  out.provenance = std::move(provenance);
+  out.packing.d = 1.0L / L_;
+  out.packing.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    // Clamp rounding-level excursions (|.| <= 1e-10) back onto the sides.
+    Vec2L p = pts_[i] / L_;
+    p.y = std::max(p.y, 0.0L);
+    out.packing.points[i] = Vec2(p);
+  }
+  return out;
+}
+
+}  // namespace tripack

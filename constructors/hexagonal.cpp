@@ -1,0 +1,28 @@
+// Class 1: Delta(k) (Oler 1961) and Delta(k) - 1 (Newman's conjecture).
+#include <stdexcept>
+
+#include "constructors/blocks.hpp"
+#include "constructors/builders.hpp"
+
+namespace tripack {
+
+namespace {
+using D = Directions<long double>;
+}
+
+Pattern build_hexagonal(long k) {
+  if (k < 2) throw std::invalid_argument("Delta(k) needs k >= 2");
+  DiskUnitsPattern pat(static_cast<long double>(k - 1));
+  pat.add_triangle({0, 0}, D::e0, D::e60, k);
+  return pat.finish({});
+}
+
+Pattern build_hexagonal_minus_one(long k) {
+  if (k < 2) throw std::invalid_argument("Delta(k)-1 needs k >= 2");
+  DiskUnitsPattern pat(static_cast<long double>(k - 1));
+  pat.add_triangle({0, 0}, D::e0, D::e60, k);
+  pat.points().erase(pat.points().begin());  // the bottom-left corner disk
+  return pat.finish({});
+}
+
+}  // namespace tripack

@@ -1,0 +1,32 @@
+// The three size conventions users meet (SPEC §1) and Oler's bound.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace tripack {
+
+// How a number describing the packing size is meant:
+//  * unit-triangle: d, the minimum distance of the centres in the side-1 triangle (the paper's);
+//  * radius: r, the radius of n circles inside the side-1 triangle;
+//  * unit-disk-side: S, the side of the smallest triangle holding n circles of radius 1.
+enum class Convention { UnitTriangle, Radius, UnitDiskSide };
+
+std::optional<Convention> parse_convention(std::string_view name);
+std::string_view convention_name(Convention c);
+
+// d <-> r: r = d / (2 (1 + sqrt3 d)),  d = 2r / (1 - 2 sqrt3 r).
+long double radius_from_d(long double d);
+long double d_from_radius(long double r);
+// d <-> S: S = 2/d + 2 sqrt3.
+long double side_from_d(long double d);
+long double d_from_side(long double s);
+// Convert a value given in convention c to d, and back.
+long double to_d(long double value, Convention c);
+long double from_d(long double d, Convention c);
+
+// Oler's bound L(n) >= t(n) = (-3 + sqrt(8n + 1)) / 2, and delta(n) = L(n) - t(n).
+long double oler_bound(long long n);
+long double oler_delta(long long n, long double L);
+
+}  // namespace tripack

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs every build dependency of tripack from Debian packages (Debian 12).
+# Idempotent: skips apt entirely when all packages are already present.
+set -euo pipefail
+PKGS=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev        # linear algebra, sparse QR / LU for the polisher
+  libcgal-dev          # exact numbers (sqrt extensions), LP solver, geometry
+  libboost-dev libboost-graph-dev  # contact graphs, multiprecision (header-only)
+  libgmp-dev libmpfr-dev            # multiprecision backends
+  libsuitesparse-dev   # SuiteSparseQR: fast rank-revealing sparse QR for the polisher
+  libyaml-cpp-dev      # classes.yaml and scenes
+  libcli11-dev         # command line
+  libfmt-dev           # formatting
+  nlohmann-json3-dev   # JSON output and input
+  libgtest-dev googletest libbenchmark-dev
+)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
