@@ -25,7 +25,10 @@ Layout make_layout(std::size_t n, const std::vector<int>& rattlers) {
   for (int r : rattlers) lay.column.at(static_cast<std::size_t>(r)) = -1;
   int c = 0;
   for (auto& col : lay.column) {
-    if (col == 0) { col = c; c += 2; }
+    if (col == 0) {
+      col = c;
+      c += 2;
+    }
   }
   lay.l_column = c;
   lay.unknowns = c + 1;
@@ -70,8 +73,14 @@ SpMat jacobian(const std::vector<Bond>& bonds, const std::vector<Vec2L>& x, cons
     const Vec2L dv = x[static_cast<std::size_t>(b.a)] - x[static_cast<std::size_t>(b.b)];
     const long double len = norm(dv);
     const double ux = static_cast<double>(dv.x / len), uy = static_cast<double>(dv.y / len);
-    if (ca >= 0) { t.emplace_back(row, ca, ux); t.emplace_back(row, ca + 1, uy); }
-    if (cb >= 0) { t.emplace_back(row, cb, -ux); t.emplace_back(row, cb + 1, -uy); }
+    if (ca >= 0) {
+      t.emplace_back(row, ca, ux);
+      t.emplace_back(row, ca + 1, uy);
+    }
+    if (cb >= 0) {
+      t.emplace_back(row, cb, -ux);
+      t.emplace_back(row, cb + 1, -uy);
+    }
   }
   SpMat J(static_cast<SuiteSparse_long>(bonds.size()), lay.unknowns);
   J.setFromTriplets(t.begin(), t.end());
@@ -171,14 +180,13 @@ PolishReport polish_bond_system(Packing& packing, const std::vector<Bond>& bonds
   if (!(packing.d > 0)) throw std::invalid_argument("polish: packing has no positive d");
   long double L = 1.0L / packing.d;
   std::vector<Vec2L> x(packing.size());
-  for (std::size_t i = 0; i < x.size(); ++i) x[i] = Vec2L(packing.points[i]) * L;
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = packing.points[i] * L;
   auto rep = polish_bond_system_disk_units(x, L, bonds, rattlers, options);
   // Rattlers are not unknowns: keep them where they were relative to the triangle.
   std::vector<char> is_rattler(x.size(), 0);
   for (int r : rattlers) is_rattler[static_cast<std::size_t>(r)] = 1;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    packing.points[i] = is_rattler[i] ? Vec2(Vec2L(packing.points[i]))
-                                      : Vec2(x[i] / L);
+    if (!is_rattler[i]) packing.points[i] = x[i] / L;
   }
   packing.d = 1.0L / L;
   return rep;

@@ -4,8 +4,9 @@
 //
 // The system is usually over-determined (t22a: 41 unknowns, 47 bonds) and consistent; some are
 // rank-deficient (Delta(k)-1 is floppy). Steps are rank-revealing sparse least-squares solves
-// (SuiteSparseQR, multifrontal and rank-revealing, through Eigen), residuals are evaluated in long double so the result is accurate to
-// double rounding regardless of the Jacobian's conditioning (mixed-precision refinement).
+// (SuiteSparseQR, multifrontal and rank-revealing, through Eigen), residuals are evaluated in long
+// double so the result is accurate to double rounding regardless of the Jacobian's conditioning
+// (mixed-precision refinement).
 #pragma once
 
 #include <vector>
@@ -27,7 +28,8 @@ struct PolishReport {
   int iterations = 0;
   int factorizations = 0;
   long double max_residual = 0;  // largest |equation| at the end, disk units
-  int rank = 0;                  // numerical rank of the last factorized Jacobian
+  int rank = -1;                 // numerical rank of the last factorized Jacobian (-1: none was
+                                 // needed, the start already met the tolerance)
   int unknowns = 0;
   int equations = 0;
 };
@@ -36,7 +38,8 @@ struct PolishReport {
 // are moved only by the rescaling of the triangle. The start may be rough: steps are damped by
 // a backtracking line search on the residual norm.
 PolishReport polish_bond_system(Packing& packing, const std::vector<Bond>& bonds,
-                                const std::vector<int>& rattlers, const PolishOptions& options = {});
+                                const std::vector<int>& rattlers,
+                                const PolishOptions& options = {});
 
 // The same on disk-unit coordinates (side L), for builders that set up contact systems there.
 PolishReport polish_bond_system_disk_units(std::vector<Vec2L>& points, long double& L,

@@ -47,8 +47,9 @@ Built run_build(const Catalogue& cat, const BuildRequest& req, bool polish) {
     b.t_polish = seconds_since(t0);
     b.polished = true;
     if (!b.polish.converged)
-      throw std::runtime_error(fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
-                                           static_cast<double>(b.polish.max_residual), b.polish.iterations));
+      throw std::runtime_error(
+          fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
+                      static_cast<double>(b.polish.max_residual), b.polish.iterations));
   }
   const auto& c = cat.find(b.pattern.provenance.class_id);
   const auto& pv = b.pattern.provenance;
@@ -79,12 +80,18 @@ void print_build(const Built& b, int digits) {
   std::cout << fmt::format("{:<10} {}\n", "d", format_significant(pk.d, digits));
   std::cout << fmt::format("{:<10} {}\n", "L", format_significant(L, digits));
   std::cout << fmt::format("{:<10} {}\n", "delta(n)", format_significant(oler_delta(n, L), 15));
-  std::cout << fmt::format("{:<10} {}\n", "bonds", count_vs(b.pattern.bonds.size(), b.bonds_expected));
-  std::cout << fmt::format("{:<10} {}\n", "rattlers", count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
-  if (b.polished)
-    std::cout << fmt::format("{:<10} max residual {:.2g} (disk units), {} iterations, rank {}/{}, {} equations\n",
-                             "polish", static_cast<double>(b.polish.max_residual), b.polish.iterations,
-                             b.polish.rank, b.polish.unknowns, b.polish.equations);
+  std::cout << fmt::format("{:<10} {}\n", "bonds",
+                           count_vs(b.pattern.bonds.size(), b.bonds_expected));
+  std::cout << fmt::format("{:<10} {}\n", "rattlers",
+                           count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
+  if (b.polished) {
+    const std::string rank = b.polish.rank < 0
+                                 ? std::string("not needed")
+                                 : fmt::format("{}/{}", b.polish.rank, b.polish.unknowns);
+    std::cout << fmt::format(
+        "{:<10} max residual {:.2g} (disk units), {} iterations, {} equations, rank {}\n", "polish",
+        static_cast<double>(b.polish.max_residual), b.polish.iterations, b.polish.equations, rank);
+  }
   std::cout << fmt::format("{:<10} construct {:.3f} ms, polish {:.3f} ms\n", "time",
                            b.t_construct * 1e3, b.t_polish * 1e3);
 }
@@ -120,7 +127,8 @@ std::pair<long, long> parse_range(const std::string& s) {
     } catch (...) {
       used = 0;
     }
-    if (used == 0 || used != t.size()) throw std::invalid_argument("--k expects K or A..B, got '" + s + "'");
+    if (used == 0 || used != t.size())
+      throw std::invalid_argument("--k expects K or A..B, got '" + s + "'");
     return v;
   };
   const auto dots = s.find("..");
@@ -140,7 +148,10 @@ int cmd_classes(const GlobalOptions& g, bool json) {
   if (json) {
     nlohmann::json arr = nlohmann::json::array();
     for (const auto& c : cat.classes()) {
-      nlohmann::json j{{"id", c.id}, {"display", c.display}, {"n", c.n.text()}, {"k_min", c.k_min},
+      nlohmann::json j{{"id", c.id},
+                       {"display", c.display},
+                       {"n", c.n.text()},
+                       {"k_min", c.k_min},
                        {"builder", c.builder}};
       if (c.k_max) j["k_max"] = c.k_max;
       if (c.has_p) j["p_min"] = c.p_min;
@@ -150,7 +161,9 @@ int cmd_classes(const GlobalOptions& g, bool json) {
       nlohmann::json vs = nlohmann::json::array();
       for (const auto& v : c.variants) vs.push_back(v.id);
       j["variants"] = vs;
-      j["claim"] = {{"status", c.claim_status}, {"best", c.claim_best}, {"tight", c.claim_tight},
+      j["claim"] = {{"status", c.claim_status},
+                    {"best", c.claim_best},
+                    {"tight", c.claim_tight},
                     {"source", c.claim_source}};
       arr.push_back(j);
     }
@@ -159,7 +172,8 @@ int cmd_classes(const GlobalOptions& g, bool json) {
   }
   std::cout << fmt::format("{:<20} {:<42} {:<8} {:<28} {}\n", "id", "n", "k", "L", "claim");
   for (const auto& c : cat.classes()) {
-    std::string kr = (c.has_p ? "p>=" + std::to_string(c.p_min) + "," : "") + "k>=" + std::to_string(c.k_min);
+    std::string kr =
+        (c.has_p ? "p>=" + std::to_string(c.p_min) + "," : "") + "k>=" + std::to_string(c.k_min);
     if (c.k_max) kr = std::to_string(c.k_min) + ".." + std::to_string(c.k_max);
     std::string claim = c.claim_status;
     if (!c.claim_best.empty() && c.claim_best != "true") claim += ", best " + c.claim_best;
@@ -177,7 +191,8 @@ int cmd_classes(const GlobalOptions& g, bool json) {
 int cmd_classify(const GlobalOptions& g, long long n, bool json) {
   const Catalogue cat = load_catalogue(g);
   const auto members = cat.classify(n);
-  if (members.empty()) throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
+  if (members.empty())
+    throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
   if (json) {
     nlohmann::json arr = nlohmann::json::array();
     for (const auto& m : members) {
@@ -200,26 +215,32 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
   const Catalogue cat = load_catalogue(g);
   Built best;
   if (o.n) {
-    if (!o.class_id.empty() || o.k || o.p)
+    if (!o.class_id.empty() || o.k != kUnsetK || o.p)
       throw std::invalid_argument("build --n N takes no class, --k or --p");
     const auto members = cat.classify(o.n);
-    if (members.empty()) throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(o.n));
+    if (members.empty())
+      throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(o.n));
     bool have = false;
     for (const auto& m : members) {
       Built b = run_build(cat, {m.cls->id, m.k, m.p, ""}, o.polish);
       if (!o.json)
         std::cerr << fmt::format("candidate {:<40} d = {}\n", member_name(b.pattern.provenance),
                                  format_significant(b.pattern.packing.d, o.digits));
-      if (!have || b.pattern.packing.d > best.pattern.packing.d) { best = std::move(b); have = true; }
+      if (!have || b.pattern.packing.d > best.pattern.packing.d) {
+        best = std::move(b);
+        have = true;
+      }
     }
   } else {
     if (o.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
-    if (o.k == 0) throw std::invalid_argument("build needs --k K");
+    if (o.k == kUnsetK) throw std::invalid_argument("build needs --k K");
     best = run_build(cat, {o.class_id, o.k, o.p, o.variant}, o.polish);
   }
   if (!o.output.empty()) write_pattern(o.output, best.pattern);
-  if (o.json) std::cout << build_json(best).dump() << "\n";
-  else print_build(best, o.digits);
+  if (o.json)
+    std::cout << build_json(best).dump() << "\n";
+  else
+    print_build(best, o.digits);
   return 0;
 }
 
@@ -232,8 +253,8 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
   constexpr long double kTol = 1e-14L;
   bool all_ok = true;
   if (!o.json)
-    std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}\n", "k", "n", "variant",
-                             "d built", "d formula", "rel.diff", "bonds", "source");
+    std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}\n", "k", "n",
+                             "variant", "d built", "d formula", "rel.diff", "bonds", "source");
   for (long k = k0; k <= k1; ++k) {
     cat.check_parameters(c, k, o.p);
     std::vector<std::string> variants = cat.variants_at(c, k);
@@ -252,15 +273,20 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
       }
       const long double d = b.pattern.packing.d;
       const long double rel = L ? std::fabs(d * *L - 1) : NAN;
-      const bool bonds_ok = !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+      const bool bonds_ok =
+          !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
       const bool ok = (!L || rel <= kTol) && bonds_ok;
       all_ok = all_ok && ok;
       if (o.json) {
-        nlohmann::json j{{"class", c.id}, {"k", k}, {"n", b.pattern.packing.size()},
+        nlohmann::json j{{"class", c.id},
+                         {"k", k},
+                         {"n", b.pattern.packing.size()},
                          {"d_built", format_significant(d, 17)},
                          {"d_formula", L ? format_significant(1 / *L, 17) : ""},
                          {"relative_difference", L ? static_cast<double>(rel) : -1.0},
-                         {"bonds", b.pattern.bonds.size()}, {"ok", ok}, {"source", source}};
+                         {"bonds", b.pattern.bonds.size()},
+                         {"ok", ok},
+                         {"source", source}};
         if (o.p) j["p"] = o.p;
         if (!v.empty()) j["variant"] = v;
         std::cout << j.dump() << "\n";
@@ -282,9 +308,9 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
 
 int cmd_table(const GlobalOptions& g, long k_max) {
   const Catalogue cat = load_catalogue(g);
-  std::cout << fmt::format("{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10} {:>6} {:>4} {:>9} {:>8}\n",
-                           "class", "p", "k", "variant", "n", "d", "L", "delta", "bonds", "ratt",
-                           "residual", "ms");
+  std::cout << fmt::format(
+      "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10} {:>6} {:>4} {:>9} {:>8}\n", "class", "p",
+      "k", "variant", "n", "d", "L", "delta", "bonds", "ratt", "residual", "ms");
   bool all_ok = true;
   for (const auto& c : cat.classes()) {
     const long p_count = c.has_p ? 3 : 1;
@@ -299,14 +325,17 @@ int cmd_table(const GlobalOptions& g, long k_max) {
           const double ms = seconds_since(t0) * 1e3;
           const auto& pk = b.pattern.packing;
           const long long n = static_cast<long long>(pk.size());
-          const bool ok = !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+          const bool ok = !b.bonds_expected ||
+                          static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
           all_ok = all_ok && ok;
-          std::cout << fmt::format("{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10.6f} {:>6} {:>4} {:>9.1e} {:>8.2f}{}\n",
-                                   c.id, p ? std::to_string(p) : "", k, v, n, format_significant(pk.d, 15),
-                                   format_significant(1 / pk.d, 15),
-                                   static_cast<double>(oler_delta(n, 1 / pk.d)), b.pattern.bonds.size(),
-                                   b.pattern.rattlers.size(), static_cast<double>(b.polish.max_residual), ms,
-                                   ok ? "" : "  bond count differs from the catalogue");
+          std::cout << fmt::format(
+              "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10.6f} {:>6} {:>4} {:>9.1e} "
+              "{:>8.2f}{}\n",
+              c.id, p ? std::to_string(p) : "", k, v, n, format_significant(pk.d, 15),
+              format_significant(1 / pk.d, 15), static_cast<double>(oler_delta(n, 1 / pk.d)),
+              b.pattern.bonds.size(), b.pattern.rattlers.size(),
+              static_cast<double>(b.polish.max_residual), ms,
+              ok ? "" : "  bond count differs from the catalogue");
         }
       }
     }

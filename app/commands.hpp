@@ -11,9 +11,11 @@ struct GlobalOptions {
   std::string catalogue;  // empty: Catalogue::default_path()
 };
 
+inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
+
 struct BuildOptions {
   std::string class_id;
-  long k = 0, p = 0;
+  long k = kUnsetK, p = 0;
   long long n = 0;  // --n: choose the best builder for n
   std::string variant;
   int digits = 15;

@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
   CLI::App cli{"tripack: dense packings of equal disks in an equilateral triangle"};
   cli.require_subcommand(1);
   GlobalOptions g;
-  cli.add_option("--catalogue", g.catalogue, "classes.yaml to use (default: $TRIPACK_CATALOGUE or the built-in path)");
+  cli.add_option("--catalogue", g.catalogue,
+                 "classes.yaml to use (default: $TRIPACK_CATALOGUE or the built-in path)");
 
   bool json = false;
   auto* classes = cli.add_subcommand("classes", "List the catalogue of classes");
@@ -18,26 +19,30 @@ int main(int argc, char** argv) {
 
   long long classify_n = 0;
   auto* classify = cli.add_subcommand("classify", "Every (class, k[, p]) whose n(k) equals N");
-  classify->add_option("N", classify_n, "number of disks")->required()->check(CLI::PositiveNumber);
+  classify->add_option("N", classify_n, "number of disks")
+      ->required()
+      ->check(CLI::Range(1LL, 1000000000000LL));
   classify->add_flag("--json", json, "JSON output");
 
   BuildOptions b;
   auto* build = cli.add_subcommand("build", "Construct, polish and report a class member");
   build->add_option("class", b.class_id, "class id (see 'tripack classes')");
   build->add_option("--k", b.k, "class index k");
-  build->add_option("--p", b.p, "matrix row p");
+  build->add_option("--p", b.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   build->add_option("--n", b.n, "number of disks: build the catalogue's best class containing n");
   build->add_option("--variant", b.variant, "variant (e.g. rattler, cavity-1, full)");
-  build->add_option("--digits", b.digits, "significant digits of d to print")->check(CLI::Range(1, 18));
+  build->add_option("--digits", b.digits, "significant digits of d to print")
+      ->check(CLI::Range(1, 18));
   build->add_option("-o,--output", b.output, "write coordinates (.txt, .csv or .json)");
   build->add_flag("--json", b.json, "print one JSON object");
   build->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
 
   CheckFormulaOptions cf;
-  auto* check = cli.add_subcommand("check-formula", "Compare built d with the catalogue's closed form");
+  auto* check =
+      cli.add_subcommand("check-formula", "Compare built d with the catalogue's closed form");
   check->add_option("class", cf.class_id, "class id")->required();
   check->add_option("--k", cf.k_range, "k or a range A..B")->required();
-  check->add_option("--p", cf.p, "matrix row p");
+  check->add_option("--p", cf.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   check->add_flag("--json", cf.json, "JSON lines output");
 
   long table_kmax = 4;

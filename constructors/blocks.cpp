@@ -14,7 +14,41 @@ int DiskUnitsPattern::add_triangle(const Vec2L& corner, const Vec2L& a, const Ve
   for (long i = 0; i < k; ++i)
     for (long j = 0; i + j < k; ++j)
       pts_.push_back(corner + a * static_cast<long double>(i) + b * static_cast<long double>(j));
+  // Lattice neighbours of (i, j): (i+1, j), (i, j+1) and (i-1, j+1) (|b - a| = 1).
+  auto id = [&](long i, long j) { return first + static_cast<int>(index_in_triangle(k, i, j)); };
+  for (long i = 0; i < k; ++i) {
+    for (long j = 0; i + j < k; ++j) {
+      if (i + j + 1 < k) {
+        recorded_.push_back(Bond::pair(id(i, j), id(i + 1, j)));
+        recorded_.push_back(Bond::pair(id(i, j), id(i, j + 1)));
+      }
+      if (i >= 1) recorded_.push_back(Bond::pair(id(i, j), id(i - 1, j + 1)));
+    }
+  }
   return first;
+}
+
+std::vector<int> DiskUnitsPattern::triangle_edge(int first, long k, Edge e) {
+  std::vector<int> out;
+  for (long t = 0; t < k; ++t) {
+    long i = 0, j = 0;
+    switch (e) {
+      case Edge::A:
+        i = t;
+        j = 0;
+        break;
+      case Edge::B:
+        i = 0;
+        j = t;
+        break;
+      case Edge::Far:
+        i = k - 1 - t;
+        j = t;
+        break;
+    }
+    out.push_back(first + static_cast<int>(index_in_triangle(k, i, j)));
+  }
+  return out;
 }
 
 long DiskUnitsPattern::index_in_triangle(long k, long i, long j) {
@@ -37,7 +71,10 @@ long double clearance(const Vec2L& p, const std::vector<Vec2L>& neighbours, long
 Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double L) {
   long double best = clearance(p, neighbours, L);
   long double h = 0.25L;
-  static const Vec2L dirs[8] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1},
+  static const Vec2L dirs[8] = {{1, 0},
+                                {-1, 0},
+                                {0, 1},
+                                {0, -1},
                                 {0.7071067811865475L, 0.7071067811865475L},
                                 {-0.7071067811865475L, 0.7071067811865475L},
                                 {0.7071067811865475L, -0.7071067811865475L},
@@ -47,7 +84,11 @@ Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double 
     for (const auto& d : dirs) {
       const Vec2L t = p + d * h;
       const long double c = clearance(t, neighbours, L);
-      if (c > best) { best = c; p = t; moved = true; }
+      if (c > best) {
+        best = c;
+        p = t;
+        moved = true;
+      }
     }
     if (!moved) h /= 2;
   }
@@ -71,7 +112,8 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
     });
     for (int r : rattlers_) {
       std::vector<Vec2L> nb;
-      for (int j : near[static_cast<std::size_t>(r)]) nb.push_back(pts_[static_cast<std::size_t>(j)]);
+      for (int j : near[static_cast<std::size_t>(r)])
+        nb.push_back(pts_[static_cast<std::size_t>(j)]);
       pts_[static_cast<std::size_t>(r)] = centre_in_cage(pts_[static_cast<std::size_t>(r)], nb, L_);
       const long double c = clearance(pts_[static_cast<std::size_t>(r)], nb, L_);
       if (!(c > 1e-6L))
@@ -85,15 +127,40 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
     worst_overlap = std::max(worst_overlap, 1 - dist);
   });
   if (worst_overlap > kBondTolerance)
-    throw std::runtime_error("constructed pattern overlaps by " + std::to_string(static_cast<double>(worst_overlap)));
+    throw std::runtime_error("constructed pattern overlaps by " +
+                             std::to_string(static_cast<double>(worst_overlap)));
   for (const auto& p : pts_)
     for (Side s : kSides)
       if (wall_distance(p, s, L_) < -kBondTolerance)
         throw std::runtime_error("constructed pattern has a centre outside the triangle");
 
   Pattern out;
-  out.bonds = explicit_bonds_ ? bonds_ : find_contacts(pts_, L_, kBondTolerance, is_rattler);
+  switch (mode_) {
+    case BondMode::Detect:
+      out.bonds = find_contacts(pts_, L_, kBondTolerance, is_rattler);
+      break;
+    case BondMode::Set:
+      out.bonds = bonds_;
+      break;
+    case BondMode::Recorded:
+      for (const auto& b : recorded_)
+        if (!is_rattler[static_cast<std::size_t>(b.a)] &&
+            (b.is_wall() || !is_rattler[static_cast<std::size_t>(b.b)]))
+          out.bonds.push_back(b);
+      break;
+  }
   std::sort(out.bonds.begin(), out.bonds.end());
+  out.bonds.erase(std::unique(out.bonds.begin(), out.bonds.end()), out.bonds.end());
+  // Recorded or set bonds must be contacts of the constructed geometry.
+  for (const auto& b : out.bonds) {
+    const auto& p = pts_[static_cast<std::size_t>(b.a)];
+    const long double gap = b.is_wall() ? wall_distance(p, b.side(), L_)
+                                        : norm(p - pts_[static_cast<std::size_t>(b.b)]) - 1;
+    if (std::fabs(gap) > kBondTolerance)
+      throw std::logic_error("intended bond " + std::to_string(b.a) + "-" + std::to_string(b.b) +
+                             " is not a contact (gap " + std::to_string(static_cast<double>(gap)) +
+                             ")");
+  }
   out.rattlers = rattlers_;
   out.provenance = std::move(provenance);
   out.packing.d = 1.0L / L_;
@@ -102,7 +169,7 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
     // Clamp rounding-level excursions (|.| <= 1e-10) back onto the sides.
     Vec2L p = pts_[i] / L_;
     p.y = std::max(p.y, 0.0L);
-    out.packing.points[i] = Vec2(p);
+    out.packing.points[i] = p;
   }
   return out;
 }

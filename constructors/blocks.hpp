@@ -11,8 +11,9 @@
 
 namespace tripack {
 
-// Contacts closer than this (disk units) to exact are bonds. The builders' positions are exact
-// to ~1e-15; the closest non-bond in any class (sparse-rows k=12, raised pair) is 1.9e-8 apart.
+// Contacts closer than this (disk units) to exact are bonds when a builder lets finish() detect
+// them. Builders with near-degenerate gaps (the chain family: sparse-rows k = 11 has a disk
+// 1.5e-11 from a wall, k = 12 has 5e-16) record their bonds from the construction instead.
 inline constexpr long double kBondTolerance = 1e-10L;
 
 class DiskUnitsPattern {
@@ -25,19 +26,34 @@ class DiskUnitsPattern {
     pts_.push_back(p);
     return static_cast<int>(pts_.size()) - 1;
   }
-  // Hexagonal triangle Delta(k): corner + i*a + j*b for i + j <= k - 1. Returns the first index;
-  // disk (i, j) is at first + index_in_triangle(k, i, j).
+  // Hexagonal triangle Delta(k): corner + i*a + j*b for i + j <= k - 1 (a, b unit vectors 60
+  // degrees apart). Returns the first index; disk (i, j) is at first + index_in_triangle(k, i, j).
+  // Its 3k(k-1)/2 internal lattice bonds are recorded.
   int add_triangle(const Vec2L& corner, const Vec2L& a, const Vec2L& b, long k);
   static long index_in_triangle(long k, long i, long j);
+  // The three edges of a triangle added at `first`: along a (j = 0), along b (i = 0), and the
+  // far edge (i + j = k - 1, ordered by j). Each lists k indices.
+  enum class Edge { A, B, Far };
+  static std::vector<int> triangle_edge(int first, long k, Edge e);
   void mark_rattler(int i) { rattlers_.push_back(i); }
-  void set_bonds(std::vector<Bond> bonds) { bonds_ = std::move(bonds); explicit_bonds_ = true; }
+
+  // Bonds. By default finish() detects them geometrically (kBondTolerance). A builder that knows
+  // its contacts calls use_recorded_bonds(): then the bonds are the triangles' lattice bonds plus
+  // those added here (bonds touching rattlers are dropped). set_bonds() replaces everything.
+  void add_bond(int i, int j) { recorded_.push_back(Bond::pair(i, j)); }
+  void add_wall_bond(int i, Side s) { recorded_.push_back(Bond::wall(i, s)); }
+  void use_recorded_bonds() { mode_ = BondMode::Recorded; }
+  void set_bonds(std::vector<Bond> bonds) {
+    bonds_ = std::move(bonds);
+    mode_ = BondMode::Set;
+  }
 
   std::vector<Vec2L>& points() { return pts_; }
   const std::vector<Vec2L>& points() const { return pts_; }
   const std::vector<int>& rattlers() const { return rattlers_; }
 
   // Moves every rattler to the centre of its cage (the point of largest clearance), then
-  // detects the bonds (unless set explicitly), checks the configuration (no overlap, all
+  // settles the bonds (see above), checks the configuration (no overlap, all
   // centres inside, every rattler free) and scales to the unit triangle.
   // Throws std::runtime_error if the pattern is invalid.
   Pattern finish(Provenance provenance);
@@ -47,7 +63,8 @@ class DiskUnitsPattern {
   std::vector<Vec2L> pts_;
   std::vector<int> rattlers_;
   std::vector<Bond> bonds_;
-  bool explicit_bonds_ = false;
+  std::vector<Bond> recorded_;
+  enum class BondMode { Detect, Recorded, Set } mode_ = BondMode::Detect;
 };
 
 }  // namespace tripack

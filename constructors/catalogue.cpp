@@ -53,7 +53,8 @@ long opt_long(const YAML::Node& node, const char* key, long fallback, const std:
 }
 
 ClassInfo parse_class(const YAML::Node& node) {
-  if (!node.IsMap()) throw CatalogueError("classes.yaml: every class must be a mapping (" + where(node) + ")");
+  if (!node.IsMap())
+    throw CatalogueError("classes.yaml: every class must be a mapping (" + where(node) + ")");
   ClassInfo c;
   c.id = req_string(node, "id", "class");
   const std::string ctx = "class '" + c.id + "'";
@@ -75,7 +76,8 @@ ClassInfo parse_class(const YAML::Node& node) {
   c.builder = req_string(b, "name", ctx + ".builder");
   for (const auto& kv : b) {
     const auto key = kv.first.as<std::string>();
-    if (key != "name") c.builder_args[key] = expr(kv.second.as<std::string>(), ctx + ".builder." + key);
+    if (key != "name")
+      c.builder_args[key] = expr(kv.second.as<std::string>(), ctx + ".builder." + key);
   }
   c.L = opt_expr(node, "L", ctx);
   c.closed_form = node["closed_form"] && node["closed_form"].as<bool>();
@@ -155,7 +157,8 @@ ExpressionEnv<long double> real_env(long k, long p) {
     if (name == "p") return static_cast<long double>(p);
     return std::nullopt;
   };
-  env.function = [](std::string_view name, std::span<const long double> a) -> std::optional<long double> {
+  env.function = [](std::string_view name,
+                    std::span<const long double> a) -> std::optional<long double> {
     if (a.size() != 1) return std::nullopt;
     const int q = static_cast<int>(a[0]);
     if (name == "ripple") return solve_ripple_chain(q, 2).L;
@@ -214,17 +217,18 @@ const ClassInfo& Catalogue::find(const std::string& id) const {
 
 void Catalogue::check_parameters(const ClassInfo& c, long k, long p) const {
   if (k < c.k_min)
-    throw CatalogueError(c.id + ": k = " + std::to_string(k) + " is below the valid range k >= " +
-                         std::to_string(c.k_min) +
+    throw CatalogueError(c.id + ": k = " + std::to_string(k) +
+                         " is below the valid range k >= " + std::to_string(c.k_min) +
                          (c.k_min_reason.empty() ? "" : " (" + c.k_min_reason + ")"));
   if (c.k_max && k > c.k_max)
-    throw CatalogueError(c.id + ": k = " + std::to_string(k) + " is above the valid range k <= " +
-                         std::to_string(c.k_max) +
+    throw CatalogueError(c.id + ": k = " + std::to_string(k) +
+                         " is above the valid range k <= " + std::to_string(c.k_max) +
                          (c.k_max_reason.empty() ? "" : " (" + c.k_max_reason + ")"));
-  if (c.has_p && p == 0) throw CatalogueError(c.id + " needs --p (p >= " + std::to_string(c.p_min) + ")");
+  if (c.has_p && p == 0)
+    throw CatalogueError(c.id + " needs --p (p >= " + std::to_string(c.p_min) + ")");
   if (c.has_p && p < c.p_min)
-    throw CatalogueError(c.id + ": p = " + std::to_string(p) + " is below the valid range p >= " +
-                         std::to_string(c.p_min));
+    throw CatalogueError(c.id + ": p = " + std::to_string(p) +
+                         " is below the valid range p >= " + std::to_string(c.p_min));
   if (!c.has_p && p != 0) throw CatalogueError(c.id + " takes no --p");
 }
 
@@ -274,7 +278,10 @@ const VariantInfo* Catalogue::variant_info(const ClassInfo& c, long k, const std
 std::vector<std::string> Catalogue::variants_at(const ClassInfo& c, long k) const {
   std::vector<std::string> out;
   for (const auto& vi : c.variants) {
-    if (!vi.is_family) { out.push_back(vi.id); continue; }
+    if (!vi.is_family) {
+      out.push_back(vi.id);
+      continue;
+    }
     const auto env = integer_env(k, 0);
     for (long long m = vi.m_min.eval<long long>(env); m <= vi.m_max.eval<long long>(env); ++m)
       out.push_back(vi.prefix + std::to_string(m));
@@ -282,9 +289,11 @@ std::vector<std::string> Catalogue::variants_at(const ClassInfo& c, long k) cons
   return out;
 }
 
-std::string Catalogue::resolve_variant(const ClassInfo& c, long k, const std::string& requested) const {
+std::string Catalogue::resolve_variant(const ClassInfo& c, long k,
+                                       const std::string& requested) const {
   if (c.variants.empty()) {
-    if (!requested.empty()) throw CatalogueError(c.id + " has no variants (got '" + requested + "')");
+    if (!requested.empty())
+      throw CatalogueError(c.id + " has no variants (got '" + requested + "')");
     return "";
   }
   if (requested.empty()) {
@@ -299,14 +308,16 @@ std::string Catalogue::resolve_variant(const ClassInfo& c, long k, const std::st
                        "' (valid: " + list + ")");
 }
 
-std::optional<long long> Catalogue::bonds_of(const ClassInfo& c, long k, long p, const std::string& v) const {
+std::optional<long long> Catalogue::bonds_of(const ClassInfo& c, long k, long p,
+                                             const std::string& v) const {
   const VariantInfo* vi = v.empty() ? nullptr : variant_info(c, k, v);
   const Expression& e = (vi && !vi->bonds.empty()) ? vi->bonds : c.bonds;
   if (e.empty()) return std::nullopt;
   return e.eval<long long>(integer_env(k, p));
 }
 
-std::optional<long long> Catalogue::rattlers_of(const ClassInfo& c, long k, long p, const std::string& v) const {
+std::optional<long long> Catalogue::rattlers_of(const ClassInfo& c, long k, long p,
+                                                const std::string& v) const {
   const VariantInfo* vi = v.empty() ? nullptr : variant_info(c, k, v);
   const Expression& e = (vi && !vi->rattlers.empty()) ? vi->rattlers : c.rattlers;
   if (e.empty()) return std::nullopt;

@@ -16,9 +16,9 @@ struct CatalogueError : std::runtime_error {
 };
 
 struct VariantInfo {
-  std::string id;        // "rattler", "full", or a family "cavity-m" with m in [m_min, m_max]
+  std::string id;  // "rattler", "full", or a family "cavity-m" with m in [m_min, m_max]
   bool is_family = false;
-  std::string prefix;    // "cavity-" for a family
+  std::string prefix;  // "cavity-" for a family
   Expression m_min, m_max;
   Expression bonds, rattlers;
   bool is_default = false;
@@ -46,8 +46,8 @@ struct ClassInfo {
   std::string k_min_reason, k_max_reason;
   std::string builder;
   std::map<std::string, Expression> builder_args;
-  Expression L;          // may be empty
-  bool closed_form = false;  // L is closed-form for every k (no chain functions)
+  Expression L;                // may be empty
+  bool closed_form = false;    // L is closed-form for every k (no chain functions)
   Expression bonds, rattlers;  // may be empty (then per variant)
   bool rigid = true;
   std::vector<VariantInfo> variants;
@@ -82,8 +82,10 @@ class Catalogue {
   // All variant ids valid at this k (families expanded).
   std::vector<std::string> variants_at(const ClassInfo& c, long k) const;
   // Bond and rattler counts the catalogue predicts (nullopt when it has no formula).
-  std::optional<long long> bonds_of(const ClassInfo& c, long k, long p, const std::string& variant) const;
-  std::optional<long long> rattlers_of(const ClassInfo& c, long k, long p, const std::string& variant) const;
+  std::optional<long long> bonds_of(const ClassInfo& c, long k, long p,
+                                    const std::string& variant) const;
+  std::optional<long long> rattlers_of(const ClassInfo& c, long k, long p,
+                                       const std::string& variant) const;
   // L from the catalogue formula (chain functions evaluated by the chain solver), if any.
   std::optional<long double> L_of(const ClassInfo& c, long k, long p) const;
   // An exact closed form for L at (k, p), if the catalogue has one.

@@ -96,8 +96,17 @@ RippleChain solve_ripple_chain(int q, int step) {
       const long double midx = (lo + hi) / 2;
       if (midx <= lo || midx >= hi) break;
       const auto f = march_left(c, midx);
-      if (!f) { lo = midx; continue; }
-      if ((*f > 0) == (f_lo > 0)) { lo = midx; f_lo = *f; } else { hi = midx; f_hi = *f; }
+      if (!f) {
+        lo = midx;
+        continue;
+      }
+      if ((*f > 0) == (f_lo > 0)) {
+        lo = midx;
+        f_lo = *f;
+      } else {
+        hi = midx;
+        f_hi = *f;
+      }
     }
     march_left(c, std::fabs(f_hi) < std::fabs(f_lo) ? hi : lo);
   }
@@ -105,12 +114,14 @@ RippleChain solve_ripple_chain(int q, int step) {
   c.floor[0] = {0, 0};
   for (int i = 0; i < q; ++i) {
     const int j = q - 1 - i;
-    if (j > i) c.raised[static_cast<std::size_t>(j)] = {c.L - c.raised[static_cast<std::size_t>(i)].x,
-                                                          c.raised[static_cast<std::size_t>(i)].y};
+    if (j > i)
+      c.raised[static_cast<std::size_t>(j)] = {c.L - c.raised[static_cast<std::size_t>(i)].x,
+                                               c.raised[static_cast<std::size_t>(i)].y};
   }
   for (int i = 0; i <= q; ++i) {
     const int j = q - i;
-    if (j > i) c.floor[static_cast<std::size_t>(j)] = {c.L - c.floor[static_cast<std::size_t>(i)].x, 0};
+    if (j > i)
+      c.floor[static_cast<std::size_t>(j)] = {c.L - c.floor[static_cast<std::size_t>(i)].x, 0};
   }
   return c;
 }

@@ -18,8 +18,8 @@ namespace tripack {
 struct RippleChain {
   int q = 0;
   int step = 0;
-  long double X = 0;  // anchor offset: A_0 = (X, sqrt3 X)
-  long double L = 0;  // side in disk units
+  long double X = 0;          // anchor offset: A_0 = (X, sqrt3 X)
+  long double L = 0;          // side in disk units
   std::vector<Vec2L> floor;   // F_0..F_q
   std::vector<Vec2L> raised;  // R_0..R_{q-1}
   Vec2L anchor(int i) const { return {X + static_cast<long double>(step * i), kSqrt3 * X}; }

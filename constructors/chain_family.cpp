@@ -21,23 +21,54 @@ Pattern build_chain_family(const ChainFamilyShape& s) {
   const long M = s.q * s.block + (s.q - 1) * s.separator;
   DiskUnitsPattern pat(L);
 
-  // Top Delta(M) from the apex, touching both side walls; its bottom row is index j = 0..M-1.
+  using Edge = DiskUnitsPattern::Edge;
+  const auto edge = [](int first, long k, Edge e) {
+    return DiskUnitsPattern::triangle_edge(first, k, e);
+  };
+  // Bonds come from the construction, not from distances: for anchor step 1 the corner raised
+  // disk comes within 1.5e-11 (k = 11) or 5e-16 (k = 12) of a wall without touching it.
+  pat.use_recorded_bonds();
+
+  // Top Delta(M) from the apex, touching both side walls; its bottom row (far edge) is
+  // j = 0..M-1 from the left.
   const int top = pat.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, M);
-  if (s.separator) {
-    for (long b = 0; b + 1 < s.q; ++b) {
-      const long j = b * (s.block + 1) + s.block;  // the disk between blocks b and b+1
-      // Bottom row of the top triangle: i + j = M - 1 with i along e240.
-      pat.mark_rattler(top + static_cast<int>(DiskUnitsPattern::index_in_triangle(M, M - 1 - j, j)));
-    }
-  }
+  for (int i : edge(top, M, Edge::A)) pat.add_wall_bond(i, Side::Left);
+  for (int i : edge(top, M, Edge::B)) pat.add_wall_bond(i, Side::Right);
+  const std::vector<int> anchor_row = edge(top, M, Edge::Far);
+  for (long b = 0; s.separator && b + 1 < s.q; ++b)
+    pat.mark_rattler(anchor_row[static_cast<std::size_t>(b * (s.block + 1) + s.block)]);
+
   // Upright triangles on the floor and inverted triangles between them, uncompressed.
+  std::vector<int> up, down;
   for (long i = 0; i <= s.q; ++i) {
-    const long double x = chain.floor[static_cast<std::size_t>(i)].x + static_cast<long double>(i) * w;
-    pat.add_triangle({x, 0}, D::e0, D::e60, s.block);
+    const long double x =
+        chain.floor[static_cast<std::size_t>(i)].x + static_cast<long double>(i) * w;
+    up.push_back(pat.add_triangle({x, 0}, D::e0, D::e60, s.block));
+    for (int d : edge(up.back(), s.block, Edge::A)) pat.add_wall_bond(d, Side::Bottom);
   }
+  for (int d : edge(up.front(), s.block, Edge::B)) pat.add_wall_bond(d, Side::Left);
+  for (int d : edge(up.back(), s.block, Edge::Far)) pat.add_wall_bond(d, Side::Right);
   for (long i = 0; i < s.q; ++i) {
     const Vec2L& r = chain.raised[static_cast<std::size_t>(i)];
-    pat.add_triangle({r.x + static_cast<long double>(i + 1) * w, r.y}, D::e60, D::e120, s.block);
+    down.push_back(pat.add_triangle({r.x + static_cast<long double>(i + 1) * w, r.y}, D::e60,
+                                    D::e120, s.block));
+  }
+  // Interfaces, each k parallel unit bars: block i over V_i's top row (the far edge runs right
+  // to left), V_i's lower-left edge against U_i's upper-right edge, V_i's lower-right edge
+  // against U_{i+1}'s upper-left edge.
+  for (long i = 0; i < s.q; ++i) {
+    const auto v_top = edge(down[static_cast<std::size_t>(i)], s.block, Edge::Far);
+    const auto v_left = edge(down[static_cast<std::size_t>(i)], s.block, Edge::B);
+    const auto v_right = edge(down[static_cast<std::size_t>(i)], s.block, Edge::A);
+    const auto u_right = edge(up[static_cast<std::size_t>(i)], s.block, Edge::Far);
+    const auto u_left = edge(up[static_cast<std::size_t>(i + 1)], s.block, Edge::B);
+    for (long t = 0; t < s.block; ++t) {
+      const auto ut = static_cast<std::size_t>(t);
+      pat.add_bond(anchor_row[static_cast<std::size_t>(i * (s.block + s.separator) + t)],
+                   v_top[static_cast<std::size_t>(s.block - 1 - t)]);
+      pat.add_bond(v_left[ut], u_right[ut]);
+      pat.add_bond(v_right[ut], u_left[ut]);
+    }
   }
   return pat.finish({});
 }

@@ -28,8 +28,10 @@ Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req) {
     pat = build_four_delta(req.k);
   } else if (c.builder == "twin") {
     long cavity = 0;
-    if (variant == "full") cavity = req.k;
-    else if (variant.rfind("cavity-", 0) == 0) cavity = std::stol(variant.substr(7));
+    if (variant == "full")
+      cavity = req.k;
+    else if (variant.rfind("cavity-", 0) == 0)
+      cavity = std::stol(variant.substr(7));
     pat = build_twin(req.k, cavity);
   } else if (c.builder == "chain-family") {
     ChainFamilyShape shape;

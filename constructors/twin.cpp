@@ -40,7 +40,11 @@ Pattern build_twin(long k, long cavity) {
       const Vec2L to = Vec2L{kk + kSqrt3 / 2, 0.5L} + D::e60 * static_cast<long double>(j - 1);
       bool moved = false;
       for (auto& p : pat.points()) {
-        if (norm(p - from) < 1e-9L) { p = to; moved = true; break; }
+        if (norm(p - from) < 1e-9L) {
+          p = to;
+          moved = true;
+          break;
+        }
       }
       if (!moved) throw std::logic_error("twin: edge disk not found");
     }

@@ -15,32 +15,49 @@ std::optional<Convention> parse_convention(std::string_view name) {
 
 std::string_view convention_name(Convention c) {
   switch (c) {
-    case Convention::UnitTriangle: return "unit-triangle";
-    case Convention::Radius: return "radius";
-    case Convention::UnitDiskSide: return "unit-disk-side";
+    case Convention::UnitTriangle:
+      return "unit-triangle";
+    case Convention::Radius:
+      return "radius";
+    case Convention::UnitDiskSide:
+      return "unit-disk-side";
   }
   return "?";
 }
 
-long double radius_from_d(long double d) { return d / (2 * (1 + kSqrt3 * d)); }
-long double d_from_radius(long double r) { return 2 * r / (1 - 2 * kSqrt3 * r); }
-long double side_from_d(long double d) { return 2 / d + 2 * kSqrt3; }
-long double d_from_side(long double s) { return 2 / (s - 2 * kSqrt3); }
+long double radius_from_d(long double d) {
+  return d / (2 * (1 + kSqrt3 * d));
+}
+long double d_from_radius(long double r) {
+  return 2 * r / (1 - 2 * kSqrt3 * r);
+}
+long double side_from_d(long double d) {
+  return 2 / d + 2 * kSqrt3;
+}
+long double d_from_side(long double s) {
+  return 2 / (s - 2 * kSqrt3);
+}
 
 long double to_d(long double value, Convention c) {
   switch (c) {
-    case Convention::UnitTriangle: return value;
-    case Convention::Radius: return d_from_radius(value);
-    case Convention::UnitDiskSide: return d_from_side(value);
+    case Convention::UnitTriangle:
+      return value;
+    case Convention::Radius:
+      return d_from_radius(value);
+    case Convention::UnitDiskSide:
+      return d_from_side(value);
   }
   return value;
 }
 
 long double from_d(long double d, Convention c) {
   switch (c) {
-    case Convention::UnitTriangle: return d;
-    case Convention::Radius: return radius_from_d(d);
-    case Convention::UnitDiskSide: return side_from_d(d);
+    case Convention::UnitTriangle:
+      return d;
+    case Convention::Radius:
+      return radius_from_d(d);
+    case Convention::UnitDiskSide:
+      return side_from_d(d);
   }
   return d;
 }
@@ -49,6 +66,8 @@ long double oler_bound(long long n) {
   return (-3.0L + std::sqrt(8.0L * static_cast<long double>(n) + 1.0L)) / 2.0L;
 }
 
-long double oler_delta(long long n, long double L) { return L - oler_bound(n); }
+long double oler_delta(long long n, long double L) {
+  return L - oler_bound(n);
+}
 
 }  // namespace tripack

@@ -30,7 +30,10 @@ class ExpressionParser {
   }
   bool eat(char c) {
     skip();
-    if (pos_ < s_.size() && s_[pos_] == c) { ++pos_; return true; }
+    if (pos_ < s_.size() && s_[pos_] == c) {
+      ++pos_;
+      return true;
+    }
     return false;
   }
   int push(Kind k, std::string name, std::vector<int> args) {
@@ -40,17 +43,23 @@ class ExpressionParser {
   int sum() {
     int lhs = product();
     for (;;) {
-      if (eat('+')) lhs = push(Kind::Add, "", {lhs, product()});
-      else if (eat('-')) lhs = push(Kind::Sub, "", {lhs, product()});
-      else return lhs;
+      if (eat('+'))
+        lhs = push(Kind::Add, "", {lhs, product()});
+      else if (eat('-'))
+        lhs = push(Kind::Sub, "", {lhs, product()});
+      else
+        return lhs;
     }
   }
   int product() {
     int lhs = unary();
     for (;;) {
-      if (eat('*')) lhs = push(Kind::Mul, "", {lhs, unary()});
-      else if (eat('/')) lhs = push(Kind::Div, "", {lhs, unary()});
-      else return lhs;
+      if (eat('*'))
+        lhs = push(Kind::Mul, "", {lhs, unary()});
+      else if (eat('/'))
+        lhs = push(Kind::Div, "", {lhs, unary()});
+      else
+        return lhs;
     }
   }
   int unary() {
@@ -74,7 +83,9 @@ class ExpressionParser {
     }
     if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
       const std::size_t b = pos_;
-      while (pos_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '.')) ++pos_;
+      while (pos_ < s_.size() &&
+             (std::isdigit(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '.'))
+        ++pos_;
       if (pos_ < s_.size() && (s_[pos_] == 'e' || s_[pos_] == 'E')) {
         ++pos_;
         if (pos_ < s_.size() && (s_[pos_] == '+' || s_[pos_] == '-')) ++pos_;
@@ -84,12 +95,16 @@ class ExpressionParser {
     }
     if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
       const std::size_t b = pos_;
-      while (pos_ < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_')) ++pos_;
+      while (pos_ < s_.size() &&
+             (std::isalnum(static_cast<unsigned char>(s_[pos_])) || s_[pos_] == '_'))
+        ++pos_;
       std::string name = s_.substr(b, pos_ - b);
       if (eat('(')) {
         std::vector<int> args;
         if (!eat(')')) {
-          do { args.push_back(sum()); } while (eat(','));
+          do {
+            args.push_back(sum());
+          } while (eat(','));
           if (!eat(')')) fail("missing ')' after arguments of " + name);
         }
         return push(Kind::Call, std::move(name), std::move(args));
@@ -110,7 +125,8 @@ Expression Expression::parse(std::string_view text) {
 std::vector<std::string> Expression::variables() const {
   std::vector<std::string> v;
   for (const auto& n : nodes_)
-    if (n.kind == Kind::Variable && std::find(v.begin(), v.end(), n.name) == v.end()) v.push_back(n.name);
+    if (n.kind == Kind::Variable && std::find(v.begin(), v.end(), n.name) == v.end())
+      v.push_back(n.name);
   return v;
 }
 

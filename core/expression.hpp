@@ -77,10 +77,14 @@ T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
         if (auto v = env.variable(nd.name)) return *v;
       throw ExpressionError("'" + text_ + "': unknown variable '" + nd.name + "'");
     }
-    case Kind::Negate: return -arg(0);
-    case Kind::Add: return arg(0) + arg(1);
-    case Kind::Sub: return arg(0) - arg(1);
-    case Kind::Mul: return arg(0) * arg(1);
+    case Kind::Negate:
+      return -arg(0);
+    case Kind::Add:
+      return arg(0) + arg(1);
+    case Kind::Sub:
+      return arg(0) - arg(1);
+    case Kind::Mul:
+      return arg(0) * arg(1);
     case Kind::Div: {
       const T a = arg(0), b = arg(1);
       if constexpr (std::is_integral_v<T>) {

@@ -25,15 +25,28 @@ struct Vec2T {
   constexpr Vec2T operator*(T s) const { return {x * s, y * s}; }
   constexpr Vec2T operator/(T s) const { return {x / s, y / s}; }
   constexpr Vec2T operator-() const { return {-x, -y}; }
-  Vec2T& operator+=(const Vec2T& o) { x += o.x; y += o.y; return *this; }
-  Vec2T& operator-=(const Vec2T& o) { x -= o.x; y -= o.y; return *this; }
+  Vec2T& operator+=(const Vec2T& o) {
+    x += o.x;
+    y += o.y;
+    return *this;
+  }
+  Vec2T& operator-=(const Vec2T& o) {
+    x -= o.x;
+    y -= o.y;
+    return *this;
+  }
   constexpr bool operator==(const Vec2T&) const = default;
 };
 
 template <class T>
-constexpr T dot(const Vec2T<T>& a, const Vec2T<T>& b) { return a.x * b.x + a.y * b.y; }
+constexpr T dot(const Vec2T<T>& a, const Vec2T<T>& b) {
+  return a.x * b.x + a.y * b.y;
+}
 template <class T>
-T norm(const Vec2T<T>& a) { using std::hypot; return hypot(a.x, a.y); }
+T norm(const Vec2T<T>& a) {
+  using std::hypot;
+  return hypot(a.x, a.y);
+}
 
 using Vec2 = Vec2T<double>;
 using Vec2L = Vec2T<long double>;
@@ -51,9 +64,12 @@ template <class T>
 T wall_distance(const Vec2T<T>& p, Side s, T side) {
   const T h = static_cast<T>(kSqrt3) / 2;
   switch (s) {
-    case Side::Bottom: return p.y;
-    case Side::Left: return h * p.x - p.y / 2;
-    case Side::Right: return h * (side - p.x) - p.y / 2;
+    case Side::Bottom:
+      return p.y;
+    case Side::Left:
+      return h * p.x - p.y / 2;
+    case Side::Right:
+      return h * (side - p.x) - p.y / 2;
   }
   return T(0);
 }
@@ -63,9 +79,12 @@ template <class T>
 Vec2T<T> wall_normal(Side s) {
   const T h = static_cast<T>(kSqrt3) / 2;
   switch (s) {
-    case Side::Bottom: return {T(0), T(1)};
-    case Side::Left: return {h, T(-0.5)};
-    case Side::Right: return {-h, T(-0.5)};
+    case Side::Bottom:
+      return {T(0), T(1)};
+    case Side::Left:
+      return {h, T(-0.5)};
+    case Side::Right:
+      return {-h, T(-0.5)};
   }
   return {};
 }

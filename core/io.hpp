@@ -1,5 +1,6 @@
 // Reading and writing packings: plain "x y" text, CSV and JSON.
-// Coordinates are written with 17 significant digits (round-trip exact for doubles).
+// Coordinates are written with 21 significant digits (round-trip exact for long double) in text
+// and CSV; JSON numbers are doubles (17 digits), so JSON also carries them as strings.
 #pragma once
 
 #include <iosfwd>
@@ -25,15 +26,17 @@ struct InputError : std::runtime_error {
 void write_text(std::ostream& out, const Pattern& pattern);
 // CSV: header "index,x,y,rattler", one row per disk.
 void write_csv(std::ostream& out, const Pattern& pattern);
-// JSON: {"n", "d" (string, 20 digits), "L", "class", "k", "p", "variant", "convention",
-//        "points": [[x, y], ...], "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}.
+// JSON: {"n", "d" (string, 21 digits), "L", "class", "k", "p", "variant", "convention",
+//        "points": [[x, y], ...] (numbers), "points_exact": [["x", "y"], ...] (21-digit strings),
+//        "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}.
 void write_json(std::ostream& out, const Pattern& pattern);
 void write_pattern(const std::string& path, const Pattern& pattern);
 
 // Reads points (any of the three formats; JSON needs a "points" array). No validation beyond
 // syntax and finiteness: geometry checks belong to the caller.
-std::vector<Vec2> read_points(std::istream& in, FileFormat format);
-std::vector<Vec2> read_points_file(const std::string& path);
+// JSON prefers "points_exact" when present.
+std::vector<Vec2L> read_points(std::istream& in, FileFormat format);
+std::vector<Vec2L> read_points_file(const std::string& path);
 
 // Decimal string of a long double with `digits` significant digits.
 std::string format_significant(long double value, int digits);

@@ -15,16 +15,18 @@ std::vector<Bond> find_contacts(const std::vector<Vec2L>& pts, long double L, lo
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (skipped(static_cast<int>(i))) continue;
     for (Side s : kSides) {
-      if (std::fabs(wall_distance(pts[i], s, L)) <= tol) bonds.push_back(Bond::wall(static_cast<int>(i), s));
+      if (std::fabs(wall_distance(pts[i], s, L)) <= tol)
+        bonds.push_back(Bond::wall(static_cast<int>(i), s));
     }
   }
   std::sort(bonds.begin(), bonds.end());
   return bonds;
 }
 
-double min_pair_distance(const std::vector<Vec2>& pts, double radius) {
-  double best = std::numeric_limits<double>::infinity();
-  for_each_pair_within(pts, radius, [&](int, int, double dist) { best = std::min(best, dist); });
+long double min_pair_distance(const std::vector<Vec2L>& pts, long double radius) {
+  long double best = std::numeric_limits<long double>::infinity();
+  for_each_pair_within(pts, radius,
+                       [&](int, int, long double dist) { best = std::min(best, dist); });
   return best;
 }
 

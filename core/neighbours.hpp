@@ -19,8 +19,10 @@ void for_each_pair_within(const std::vector<Vec2T<T>>& pts, T radius, F&& f) {
   if (n < 2) return;
   T xmin = pts[0].x, xmax = pts[0].x, ymin = pts[0].y, ymax = pts[0].y;
   for (const auto& p : pts) {
-    xmin = std::min(xmin, p.x); xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y); ymax = std::max(ymax, p.y);
+    xmin = std::min(xmin, p.x);
+    xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y);
+    ymax = std::max(ymax, p.y);
   }
   // Cell size >= radius so neighbours are in the 3x3 block; cap the cell count near n.
   const double span = static_cast<double>(std::max(xmax - xmin, ymax - ymin));
@@ -29,14 +31,19 @@ void for_each_pair_within(const std::vector<Vec2T<T>>& pts, T radius, F&& f) {
   const auto nx = static_cast<std::int64_t>(static_cast<double>(xmax - xmin) / cell) + 1;
   const auto ny = static_cast<std::int64_t>(static_cast<double>(ymax - ymin) / cell) + 1;
   auto cell_of = [&](const Vec2T<T>& p) {
-    auto cx = std::min<std::int64_t>(nx - 1, static_cast<std::int64_t>(static_cast<double>(p.x - xmin) / cell));
-    auto cy = std::min<std::int64_t>(ny - 1, static_cast<std::int64_t>(static_cast<double>(p.y - ymin) / cell));
+    auto cx = std::min<std::int64_t>(
+        nx - 1, static_cast<std::int64_t>(static_cast<double>(p.x - xmin) / cell));
+    auto cy = std::min<std::int64_t>(
+        ny - 1, static_cast<std::int64_t>(static_cast<double>(p.y - ymin) / cell));
     return cy * nx + cx;
   };
   // Counting sort of points by cell.
   std::vector<std::int64_t> start(static_cast<std::size_t>(nx * ny + 1), 0);
   std::vector<std::int64_t> cells(n);
-  for (std::size_t i = 0; i < n; ++i) { cells[i] = cell_of(pts[i]); ++start[cells[i] + 1]; }
+  for (std::size_t i = 0; i < n; ++i) {
+    cells[i] = cell_of(pts[i]);
+    ++start[cells[i] + 1];
+  }
   for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
   std::vector<int> order(n);
   {
@@ -76,6 +83,6 @@ std::vector<Bond> find_contacts(const std::vector<Vec2L>& pts, long double L, lo
                                 const std::vector<char>& skip = {});
 
 // Smallest pairwise distance among points no farther apart than `radius` (infinity if none).
-double min_pair_distance(const std::vector<Vec2>& pts, double radius);
+long double min_pair_distance(const std::vector<Vec2L>& pts, long double radius);
 
 }  // namespace tripack

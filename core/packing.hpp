@@ -10,8 +10,8 @@ namespace tripack {
 
 // A bond is a disk-disk pair at distance exactly d, or a disk centre exactly on a side.
 struct Bond {
-  int a = -1;      // disk index
-  int b = -1;      // other disk index, or -1 - side for a wall bond
+  int a = -1;  // disk index
+  int b = -1;  // other disk index, or -1 - side for a wall bond
   static Bond pair(int i, int j) { return i < j ? Bond{i, j} : Bond{j, i}; }
   static Bond wall(int i, Side s) { return Bond{i, -1 - static_cast<int>(s)}; }
   bool is_wall() const { return b < 0; }
@@ -20,10 +20,11 @@ struct Bond {
 };
 
 // n points in the unit triangle (0,0), (1,0), (1/2, sqrt3/2) and their minimum distance d.
-// d is kept in extended precision because the polisher resolves it beyond double; the points
-// themselves are doubles (their rounding does not limit d, which comes from the bond system).
+// Points and d are long double: the polisher resolves them beyond double, and a distance measured
+// from double coordinates would carry an error of ~1e-16 * L relative (3e-14 at n = 80,000).
+// The billiards engine keeps its own double arrays.
 struct Packing {
-  std::vector<Vec2> points;
+  std::vector<Vec2L> points;
   long double d = 0;
   std::size_t size() const { return points.size(); }
 };
@@ -39,12 +40,14 @@ struct Provenance {
 // A packing plus what its builder intends: the bonds and the rattlers.
 struct Pattern {
   Packing packing;
-  std::vector<Bond> bonds;     // sorted, unique; rattlers carry none
-  std::vector<int> rattlers;   // sorted disk indices
+  std::vector<Bond> bonds;    // sorted, unique; rattlers carry none
+  std::vector<int> rattlers;  // sorted disk indices
   Provenance provenance;
 };
 
 // n(k) helper used everywhere: Delta(k) = k(k+1)/2.
-constexpr long long triangular(long long k) { return k * (k + 1) / 2; }
+constexpr long long triangular(long long k) {
+  return k * (k + 1) / 2;
+}
 
 }  // namespace tripack

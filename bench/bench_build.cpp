@@ -1,0 +1,108 @@
+// Build and polish time against n (issue: 10^6 disks built in < 1 s; polish of n ~ 10^4 in < 2 s).
+// Run: build/bench/bench_build --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include "analysis/polish.hpp"
+#include "constructors/builders.hpp"
+
+namespace tripack {
+namespace {
+
+void report_n(benchmark::State& state, std::size_t n) {
+  state.counters["n"] = static_cast<double>(n);
+  state.counters["us_per_disk"] =
+      benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["us_per_disk"] = state.counters["us_per_disk"] * 1e6;
+}
+
+template <class Builder>
+void bench_build(benchmark::State& state, Builder&& builder) {
+  std::size_t n = 0;
+  for (auto _ : state) {
+    Pattern p = builder(state.range(0));
+    n = p.packing.size();
+    benchmark::DoNotOptimize(p.packing.points.data());
+  }
+  report_n(state, n);
+}
+
+template <class Builder>
+void bench_polish(benchmark::State& state, Builder&& builder) {
+  const Pattern base = builder(state.range(0));
+  for (auto _ : state) {
+    state.PauseTiming();
+    Pattern p = base;
+    state.ResumeTiming();
+    const auto rep = polish_bond_system(p.packing, p.bonds, p.rattlers);
+    if (!rep.converged) state.SkipWithError("polish did not converge");
+    benchmark::DoNotOptimize(p.packing.d);
+  }
+  report_n(state, base.packing.size());
+}
+
+// Closed-form builders (construction only): k = 707 gives 4Delta(k) = 1,001,112 disks.
+void BM_BuildFourDelta(benchmark::State& s) {
+  bench_build(s, [](long k) { return build_four_delta(k); });
+}
+BENCHMARK(BM_BuildFourDelta)
+    ->Arg(10)
+    ->Arg(32)
+    ->Arg(100)
+    ->Arg(316)
+    ->Arg(707)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_BuildTwin(benchmark::State& s) {
+  bench_build(s, [](long k) { return build_twin(k, 0); });
+}
+BENCHMARK(BM_BuildTwin)->Arg(10)->Arg(100)->Arg(707)->Unit(benchmark::kMillisecond);
+
+// Chain family (matrix row p=3 at growing k, and Delta(2p)+1 at growing p).
+void BM_BuildMatrixP3(benchmark::State& s) {
+  bench_build(s, [](long k) { return build_chain_family({3, k, 1}); });
+}
+BENCHMARK(BM_BuildMatrixP3)->Arg(10)->Arg(100)->Arg(350)->Unit(benchmark::kMillisecond);
+
+void BM_BuildEvenRipple(benchmark::State& s) {
+  bench_build(s, [](long p) { return build_chain_family({p, 1, 1}); });
+}
+BENCHMARK(BM_BuildEvenRipple)->Arg(3)->Arg(11)->Arg(70)->Arg(700)->Unit(benchmark::kMillisecond);
+
+void BM_BuildOddRipple(benchmark::State& s) {
+  bench_build(s, [](long k) { return build_odd_ripple_depressed(k); });
+}
+BENCHMARK(BM_BuildOddRipple)->Arg(3)->Arg(7)->Arg(22)->Arg(70)->Unit(benchmark::kMillisecond);
+
+// Polish of the full bond system (sparse QR + long double residuals), n up to ~10^4.
+void BM_PolishFourDelta(benchmark::State& s) {
+  bench_polish(s, [](long k) { return build_four_delta(k); });
+}
+BENCHMARK(BM_PolishFourDelta)
+    ->Arg(3)
+    ->Arg(10)
+    ->Arg(22)
+    ->Arg(50)
+    ->Arg(71)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_PolishEvenRipple(benchmark::State& s) {
+  bench_polish(s, [](long p) { return build_chain_family({p, 1, 1}); });
+}
+BENCHMARK(BM_PolishEvenRipple)
+    ->Arg(3)
+    ->Arg(11)
+    ->Arg(22)
+    ->Arg(50)
+    ->Arg(70)
+    ->Unit(benchmark::kMillisecond);
+
+void BM_PolishOddRipple(benchmark::State& s) {
+  bench_polish(s, [](long k) { return build_odd_ripple_depressed(k); });
+}
+BENCHMARK(BM_PolishOddRipple)->Arg(3)->Arg(7)->Arg(22)->Arg(70)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace tripack
+
+BENCHMARK_MAIN();

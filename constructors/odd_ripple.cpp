@@ -1,0 +1,255 @@
+// Class 7: Delta(2k+1) + 1, the non-symmetric ripple with a depressed cage (CONSTRUCTIONS.md §7).
+//
+// Disk units. The top Delta(2k) hangs from the apex with sites S(i, j) = (L/2 - i/2 + j,
+// (L - i) sqrt3/2). Its row 2k-2 has free disks B1 (j=1), B2 (j=2); its bottom ("anchor") row
+// A_0..A_{2k-1} has A_1 (depressed) and A_3 free and the rattlers A_2, A_4, ..., A_{2k-2}. Below,
+// the chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1} (F on the floor, R raised).
+//
+// The 3k+10 contact equations in 3k+9 unknowns reduce to one unknown, L:
+//  * R0 touches the corner F0 and A0; A0, R0 and A1 form a unit equilateral triangle, so A1
+//    follows, and F1 = R0 + A1 - A0 lies on the floor for every L (the redundant equation);
+//  * A0 S(2k-2,0) B1 A1 is a unit rhombus, so B1 = A1 + e60; then B2 touches B1 and S(2k-3,1),
+//    A3 touches B2 and S(2k-2,3), F2 = F1 + e0, and R1 touches F2 and A3;
+//  * from F3 on it is the ripple march: R_i touches F_{i+1} and A_{2i+1}, F_{i+2} sits on the
+//    floor at distance 1 from R_i;
+//  * the condition is F_{k+1} = (L, 0).
+// Shooting on L solves it to long double in O(k). The whole bond system then goes to the polisher,
+// which measures every residual (and would refine a poor start), and finish() re-detects the
+// bonds from the geometry alone: they must reproduce the intended list exactly.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "analysis/polish.hpp"
+#include "constructors/blocks.hpp"
+#include "constructors/builders.hpp"
+#include "core/neighbours.hpp"
+
+namespace tripack {
+
+namespace {
+
+using D = Directions<long double>;
+
+// Site j of row i of the top Delta(2k) (row 0 is the apex).
+Vec2L site(long double L, long i, long j) {
+  const long double ii = static_cast<long double>(i);
+  return {L / 2 - ii / 2 + static_cast<long double>(j), (L - ii) * kSqrt3 / 2};
+}
+
+// The intersection of the unit circles about c1 and c2 closer to `hint`, if they meet.
+std::optional<Vec2L> meet(const Vec2L& c1, const Vec2L& c2, const Vec2L& hint) {
+  const Vec2L dv = c2 - c1;
+  const long double q = dot(dv, dv);
+  if (!(q < 4) || q == 0) return std::nullopt;
+  const long double dist = std::sqrt(q);
+  const long double h = std::sqrt(1 - q / 4);
+  const Vec2L mid = (c1 + c2) / 2.0L;
+  const Vec2L off = Vec2L(-dv.y, dv.x) * (h / dist);
+  const Vec2L p = mid + off, m = mid - off;
+  return dot(p - hint, p - hint) < dot(m - hint, m - hint) ? p : m;
+}
+
+// The positions of the free disks for a given side L.
+struct Ripple {
+  long double L = 0;
+  std::vector<Vec2L> floor;   // F_0..F_{k+1}
+  std::vector<Vec2L> raised;  // R_0..R_{k-1}
+  Vec2L a1, a3, b1, b2;
+};
+
+// A raised disk touching the floor disk f and the disk a, on the right of f, and the next floor
+// disk. Returns false if the geometry is impossible for this L.
+bool raise(const Vec2L& f, const Vec2L& a, Vec2L& r, Vec2L& next_floor) {
+  const auto m = meet(f, a, f + D::e0);
+  if (!m || !(m->y > 0) || !(m->y < 1)) return false;
+  r = *m;
+  next_floor = {r.x + std::sqrt((1 - r.y) * (1 + r.y)), 0};
+  return true;
+}
+
+// Marches from the left corner for side L; returns F_{k+1}.x - L, or nullopt if the chain
+// cannot be closed at this L.
+std::optional<long double> march(long k, long double L, Ripple& c) {
+  c.L = L;
+  const long row = 2 * k - 1;  // the anchor row
+  const Vec2L a0 = site(L, row, 0);
+  c.floor[0] = {0, 0};
+  if (!raise(c.floor[0], a0, c.raised[0], c.floor[1])) return std::nullopt;
+  const auto a1 = meet(a0, c.raised[0], site(L, row, 1));
+  if (!a1) return std::nullopt;
+  c.a1 = *a1;
+  c.b1 = c.a1 + D::e60;
+  const auto b2 = meet(c.b1, site(L, row - 2, 1), site(L, row - 1, 2));
+  if (!b2) return std::nullopt;
+  c.b2 = *b2;
+  const auto a3 = meet(c.b2, site(L, row - 1, 3), site(L, row, 3));
+  if (!a3) return std::nullopt;
+  c.a3 = *a3;
+  c.floor[2] = c.floor[1] + D::e0;
+  if (!raise(c.floor[2], c.a3, c.raised[1], c.floor[3])) return std::nullopt;
+  for (long i = 2; i < k; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (!raise(c.floor[u + 1], site(L, row, 2 * i + 1), c.raised[u], c.floor[u + 2]))
+      return std::nullopt;
+  }
+  return c.floor[static_cast<std::size_t>(k + 1)].x - L;
+}
+
+// Solves the shooting equation in x0 = A_0.x, L = 2k - 1 + 2 x0. The physical root is the first
+// sign change scanning down from x0 = 1 (x0 = 0.786 at k = 3, 0.631 at k = 60, 0.598 at k = 300;
+// at x0 = 1/sqrt3 the anchor row is at height 1 and nothing fits below it). Above some x0 the
+// chain cannot be closed (a raised disk would leave the band 0 < y < 1); for large k the mismatch
+// changes sign within less than a scan step of that edge, so the edge is bisected as well.
+Ripple solve_ripple(long k) {
+  Ripple c;
+  c.floor.resize(static_cast<std::size_t>(k + 2));
+  c.raised.resize(static_cast<std::size_t>(k));
+  const long double base = static_cast<long double>(2 * k - 1);
+  auto f = [&](long double x0) { return march(k, base + 2 * x0, c); };
+  long double hi = 0, lo = 0, f_hi = 0, f_lo = 0;
+  long double x_prev = 1, f_prev = 0;
+  bool prev_valid = false, bracketed = false;
+  for (int j = 1; j <= 500 && !bracketed; ++j) {
+    const long double x = 1.0L - j * 1e-3L;
+    const auto v = f(x);
+    if (v && prev_valid && (*v > 0) != (f_prev > 0)) {
+      lo = x;
+      f_lo = *v;
+      hi = x_prev;
+      f_hi = f_prev;
+      bracketed = true;
+    } else if (v && !prev_valid) {
+      // Entering the closable range: bisect towards its edge, watching for a sign change.
+      long double edge = x_prev, inner = x;
+      for (int it = 0; it < 100 && !bracketed; ++it) {
+        const long double mid = (edge + inner) / 2;
+        if (!(mid > inner && mid < edge)) break;
+        const auto w = f(mid);
+        if (!w) {
+          edge = mid;
+        } else if ((*w > 0) != (*v > 0)) {
+          lo = x;
+          f_lo = *v;
+          hi = mid;
+          f_hi = *w;
+          bracketed = true;
+        } else {
+          inner = mid;
+        }
+      }
+    }
+    x_prev = x;
+    prev_valid = v.has_value();
+    if (v) f_prev = *v;
+  }
+  if (!bracketed) throw std::runtime_error("odd ripple: no root for k=" + std::to_string(k));
+  // Bisection to the last bit: cheap, and it cannot be misled by rounding noise.
+  for (int it = 0; it < 200; ++it) {
+    const long double mid = (lo + hi) / 2;
+    if (mid <= lo || mid >= hi) break;
+    const auto v = f(mid);
+    if (!v) throw std::runtime_error("odd ripple: chain breaks inside the bracket");
+    if ((*v > 0) == (f_lo > 0)) {
+      lo = mid;
+      f_lo = *v;
+    } else {
+      hi = mid;
+      f_hi = *v;
+    }
+  }
+  f(std::fabs(f_hi) < std::fabs(f_lo) ? hi : lo);
+  return c;
+}
+
+}  // namespace
+
+Pattern build_odd_ripple_depressed(long k) {
+  if (k < 3) throw std::invalid_argument("Delta(2k+1)+1 (depressed cage) needs k >= 3");
+  const Ripple c = solve_ripple(k);
+  long double L = c.L;
+  const long m = 2 * k;  // the top triangle Delta(m)
+  DiskUnitsPattern pat(L);
+  const int top = pat.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, m);
+  // Disk j of row i: i - j steps along e240 and j along e300 from the apex.
+  auto s = [&](long i, long j) {
+    return top + static_cast<int>(DiskUnitsPattern::index_in_triangle(m, i - j, j));
+  };
+  const int a0 = s(m - 1, 0), a1 = s(m - 1, 1), a3 = s(m - 1, 3);
+  const int b1 = s(m - 2, 1), b2 = s(m - 2, 2);
+  std::vector<int> rattlers;
+  for (long j = 2; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
+
+  // Lattice bonds (pairs and side walls) among the disks that stay on their sites.
+  std::vector<char> off_lattice(pat.points().size(), 0);
+  for (int i : {a1, a3, b1, b2}) off_lattice[static_cast<std::size_t>(i)] = 1;
+  for (int r : rattlers) off_lattice[static_cast<std::size_t>(r)] = 1;
+  std::vector<Bond> bonds = find_contacts(pat.points(), L, kBondTolerance, off_lattice);
+
+  auto& pts = pat.points();
+  pts[static_cast<std::size_t>(a1)] = c.a1;
+  pts[static_cast<std::size_t>(a3)] = c.a3;
+  pts[static_cast<std::size_t>(b1)] = c.b1;
+  pts[static_cast<std::size_t>(b2)] = c.b2;
+  // The bottom chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1}.
+  std::vector<int> fl(static_cast<std::size_t>(k + 2)), ra(static_cast<std::size_t>(k));
+  std::vector<int> chain;
+  auto add_floor = [&](long i) {
+    fl[static_cast<std::size_t>(i)] = pat.add(c.floor[static_cast<std::size_t>(i)]);
+    chain.push_back(fl[static_cast<std::size_t>(i)]);
+  };
+  auto add_raised = [&](long i) {
+    ra[static_cast<std::size_t>(i)] = pat.add(c.raised[static_cast<std::size_t>(i)]);
+    chain.push_back(ra[static_cast<std::size_t>(i)]);
+  };
+  add_floor(0);
+  add_raised(0);
+  add_floor(1);
+  for (long i = 1; i < k; ++i) {
+    add_floor(i + 1);
+    add_raised(i);
+  }
+  add_floor(k + 1);
+
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    bonds.push_back(Bond::pair(chain[i], chain[i + 1]));
+  for (int f : fl) bonds.push_back(Bond::wall(f, Side::Bottom));
+  bonds.push_back(Bond::wall(fl.front(), Side::Left));
+  bonds.push_back(Bond::wall(fl.back(), Side::Right));
+  // The contacts of the depressed cage (CONSTRUCTIONS.md §7).
+  const int r0 = ra[0], r1 = ra[1], f1 = fl[1];
+  const int cage[][2] = {
+      {r0, a0},          {r0, a1}, {f1, a1},          {a1, a0}, {a1, b1},  // the depressed disk A1
+      {b1, s(m - 2, 0)}, {b1, b2}, {b2, s(m - 3, 1)}, {b2, a3},            // B1, B2 (row 2k-2)
+      {a3, s(m - 2, 3)}, {a3, r1}};                                        // A3
+  for (const auto& e : cage) bonds.push_back(Bond::pair(e[0], e[1]));
+  for (long i = 2; i < k; ++i)
+    bonds.push_back(Bond::pair(ra[static_cast<std::size_t>(i)], s(m - 1, 2 * i + 1)));
+  std::sort(bonds.begin(), bonds.end());
+
+  // The shooting start satisfies the system to a few ulp of the coordinates (5e-16 at k = 200).
+  // Accept ~100 ulp (relative to L) rather than the polisher's default: refining further would
+  // cost a sparse QR of the whole triangle here, and the caller's polish refines anyway.
+  PolishOptions opt;
+  opt.tolerance = 1e-17L;
+  const PolishReport rep = polish_bond_system_disk_units(pts, L, bonds, rattlers, opt);
+  if (!(rep.max_residual < 1e-13L))
+    throw std::runtime_error("odd ripple: contact system not solved (residual " +
+                             std::to_string(static_cast<double>(rep.max_residual)) + ")");
+  pat.set_side(L);
+  // Rattlers start a little below their sites, inside the cages the ripple opens.
+  for (long j = 2; j < m - 1; j += 2) {
+    pts[static_cast<std::size_t>(s(m - 1, j))] = site(L, m - 1, j) - Vec2L{0, 0.2L};
+    pat.mark_rattler(s(m - 1, j));
+  }
+  Pattern out = pat.finish({});
+  if (out.bonds != bonds)
+    throw std::logic_error("odd ripple: detected contacts differ from the intended ones for k=" +
+                           std::to_string(k));
+  return out;
+}
+
+}  // namespace tripack

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# The tripack command line: good input works, bad input gets ONE clear line on stderr and a
+# non-zero exit. Usage: cli_test.sh path/to/tripack path/to/tests/data
+set -u
+TRIPACK=$1
+DATA=$2
+pass=0
+fail=0
+
+# expect_error "description" "needle in the message" args...
+expect_error() {
+  local what=$1 needle=$2
+  shift 2
+  local err out rc
+  err=$(mktemp)
+  out=$("$TRIPACK" "$@" 2>"$err")
+  rc=$?
+  local lines
+  lines=$(wc -l <"$err")
+  if [ "$rc" -ne 0 ] && [ "$lines" -eq 1 ] && grep -qi -- "$needle" "$err"; then
+    pass=$((pass + 1))
+  else
+    fail=$((fail + 1))
+    echo "FAIL: $what: rc=$rc, stderr lines=$lines: $(cat "$err")"
+  fi
+  rm -f "$err"
+}
+
+# expect_output "description" "needle in stdout" args...
+expect_output() {
+  local what=$1 needle=$2
+  shift 2
+  local out rc
+  out=$("$TRIPACK" "$@" 2>/dev/null)
+  rc=$?
+  if [ "$rc" -eq 0 ] && grep -qF -- "$needle" <<<"$out"; then
+    pass=$((pass + 1))
+  else
+    fail=$((fail + 1))
+    echo "FAIL: $what: rc=$rc, output: $out"
+  fi
+}
+
+expect_error "unknown class" "unknown class 'nonsense'" build nonsense --k 2
+expect_error "k below 1" "below the valid range" build four-delta --k 0
+expect_error "negative k" "below the valid range" build twin --k -3
+expect_error "k above the class's range" "above the valid range" build sparse-rows --k 13
+expect_error "k below the class's range" "below the valid range" build odd-ripple --k 2
+expect_error "matrix without --p" "needs --p" build matrix --k 2
+expect_error "p on a class without p" "takes no --p" build four-delta --k 2 --p 3
+expect_error "bad variant" "no variant 'cavity-5'" build twin --k 3 --variant cavity-5
+expect_error "missing --k" "needs --k" build four-delta
+expect_error "N in no class" "no class of the catalogue contains n = 23" classify 23
+expect_error "build --n in no class" "contains n = 32" build --n 32
+expect_error "malformed classes.yaml" "malformed_classes.yaml" --catalogue "$DATA/malformed_classes.yaml" classes
+expect_error "missing classes.yaml" "cannot read catalogue" --catalogue /nonexistent.yaml classes
+expect_error "non-numeric k" "k" build four-delta --k two
+expect_error "bad k range" "--k expects" check-formula four-delta --k 3..x
+expect_error "unwritable output" "cannot open" build four-delta --k 2 -o /nonexistent/dir/out.txt
+
+# classify 12: exactly the four members of the issue, in catalogue order.
+out=$("$TRIPACK" classify 12)
+want=$'four-delta k=2   (4Delta(k))\nmatrix p=1 k=2   (n_p(k) = Delta((k+1)p-1)+(2p+1)Delta(k))\nripple-of-pairs k=1   (Delta(3k+1)+2)\npairs k=1   (Delta(2k+3)-3)'
+if [ "$out" = "$want" ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: classify 12: $out"; fi
+
+# GL1995 Fig.t22: d(22) = 0.179396908611866, 47 bonds, 2 rattlers.
+expect_output "build t22a" "0.179396908611866" build even-ripple --k 3
+expect_output "build --n 22 picks a class with d(22)" '"d":"0.1793969086118659' build --n 22 --json
+expect_output "json keys" '"rattlers":2' build matrix --p 3 --k 1 --json
+expect_output "check-formula" "closed form" check-formula four-delta --k 1..5
+
+# -o writes coordinates that read back: 22 lines of "x y" after the header.
+tmp=$(mktemp -d)
+"$TRIPACK" build even-ripple --k 3 -o "$tmp/t22a.txt" >/dev/null
+if [ "$(grep -vc '^#' "$tmp/t22a.txt")" -eq 22 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: -o text"; fi
+"$TRIPACK" build even-ripple --k 3 -o "$tmp/t22a.json" >/dev/null
+if grep -q '"points"' "$tmp/t22a.json"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: -o json"; fi
+rm -rf "$tmp"
+
+echo "cli: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,333 @@
+// constructors/: every builder, through the catalogue's registry, against the paper's values,
+// the closed forms of CONSTRUCTIONS.md and the geometry itself.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "analysis/polish.hpp"
+#include "constructors/builders.hpp"
+#include "constructors/catalogue.hpp"
+#include "constructors/registry.hpp"
+#include "core/neighbours.hpp"
+
+namespace tripack {
+namespace {
+
+const Catalogue& catalogue() {
+  static const Catalogue c = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
+  return c;
+}
+
+Pattern build(const std::string& id, long k, long p = 0, const std::string& variant = "",
+              bool polish = true) {
+  Pattern pat = build_pattern(catalogue(), {id, k, p, variant});
+  if (polish) {
+    const auto rep = polish_bond_system(pat.packing, pat.bonds, pat.rattlers);
+    EXPECT_TRUE(rep.converged) << id << " k=" << k << " residual "
+                               << static_cast<double>(rep.max_residual);
+  }
+  return pat;
+}
+
+long double rel(long double a, long double b) {
+  return std::fabs(a / b - 1);
+}
+
+// A distance measured from long double unit-triangle coordinates (rounding 2^-64 each, built
+// from O(k) long double operations) is accurate to ~1e-18 * L relative; 1e-17 * L is generous
+// and still 1e-14 at L = 1000.
+long double measured_tolerance(long double L) {
+  return 1e-17L * L;
+}
+
+// A valid packing: all pairwise distances >= d (1 - 1e-12) and every centre inside the
+// triangle (to 1e-18, a few roundings of the long double coordinates). Returns the smallest
+// pairwise distance.
+long double expect_valid_packing(const Pattern& pat, const std::string& what) {
+  const auto& pk = pat.packing;
+  const long double md = min_pair_distance(pk.points, pk.d * 1.5L);
+  EXPECT_GE(md, pk.d * (1 - 1e-12L)) << what;
+  long double worst = 0;
+  for (const auto& p : pk.points)
+    for (Side s : kSides) worst = std::min(worst, wall_distance(p, s, 1.0L));
+  EXPECT_GE(worst, -1e-18L) << what;
+  return md;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Closed forms for all k.
+
+TEST(FourDelta, ClosedFormForKUpTo200) {
+  // GL1995 Sec.5: d(4Delta(k)) = 1/(2k - 2 + sqrt3).
+  for (long k = 1; k <= 200; ++k) {
+    const long double exact = 1 / (2.0L * k - 2 + std::sqrt(3.0L));
+    const Pattern pat = build("four-delta", k, 0, "", false);
+    // The constructed geometry itself realises d: its closest pair is exactly d apart.
+    const long double md = expect_valid_packing(pat, "four-delta k=" + std::to_string(k));
+    EXPECT_LT(rel(md, exact), std::max(1e-16L, measured_tolerance(1 / exact))) << k;
+    EXPECT_EQ(pat.bonds.size(), static_cast<std::size_t>(6 * k * k + 3 * k));
+  }
+  // The polished bond system reaches the same d (polishing every k up to 200 costs minutes; the
+  // sample covers small, medium and the largest k).
+  for (long k : {1L, 2L, 3L, 4L, 5L, 8L, 13L, 21L, 34L, 55L, 89L, 144L, 200L}) {
+    const Pattern pat = build("four-delta", k);
+    EXPECT_LT(rel(pat.packing.d, 1 / (2.0L * k - 2 + std::sqrt(3.0L))), 1e-14) << k;
+  }
+}
+
+TEST(Twin, ClosedFormForKUpTo200) {
+  // GL1995 Sec.5: d(2Delta(k+1) + 2Delta(k) - 1) = 1/(2k - 1 + sqrt3).
+  for (long k = 1; k <= 200; ++k) {
+    const long double exact = 1 / (2.0L * k - 1 + std::sqrt(3.0L));
+    for (const char* v : {"rattler", "full"}) {
+      const Pattern pat = build("twin", k, 0, v, false);
+      const long double md = expect_valid_packing(pat, "twin k=" + std::to_string(k) + " " + v);
+      EXPECT_LT(rel(md, exact), std::max(1e-16L, measured_tolerance(1 / exact))) << k << " " << v;
+    }
+  }
+  for (long k : {1L, 2L, 3L, 5L, 8L, 13L, 34L, 89L, 200L}) {
+    const Pattern pat = build("twin", k);
+    EXPECT_LT(rel(pat.packing.d, 1 / (2.0L * k - 1 + std::sqrt(3.0L))), 1e-14) << k;
+  }
+}
+
+TEST(Hexagonal, OlerForAllK) {
+  // Oler 1961: d(Delta(k)) = 1/(k-1); Delta(k)-1 has the same d (conjectured optimal).
+  for (long k = 2; k <= 60; ++k) {
+    for (const char* id : {"hexagonal", "hexagonal-minus-one"}) {
+      const Pattern pat = build(id, k, 0, "", k <= 30);
+      EXPECT_LT(rel(pat.packing.d, 1.0L / (k - 1)), 1e-15) << id << " " << k;
+      EXPECT_EQ(pat.packing.size(),
+                static_cast<std::size_t>(triangular(k) -
+                                         (std::string(id) == "hexagonal-minus-one" ? 1 : 0)));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The paper's printed values.
+
+TEST(Matrix, PapersD22AndD79) {
+  // GL1995 Fig.t22: d(22) = 0.179396908611866, 47 bonds, rattlers 3 and 5.
+  // GL1995 Sec.5: d(79) = 0.0871159038791759 (194 bonds, 5 rattlers), d(106) =
+  // 0.0742982999063026 (267 bonds, 6 rattlers); Sec.6: d(254) = 0.0467170396481042 (679 bonds,
+  // 10 rattlers). 2e-15 relative: the printed values are rounded to 15-16 digits.
+  struct Case {
+    long p;
+    long double d;
+    std::size_t bonds, rattlers;
+  };
+  for (const Case& c :
+       {Case{3, 0.179396908611866L, 47, 2}, Case{6, 0.0871159038791759L, 194, 5},
+        Case{7, 0.0742982999063026L, 267, 6}, Case{11, 0.0467170396481042L, 679, 10}}) {
+    for (const auto& [id, k, p] : {std::tuple<std::string, long, long>{"even-ripple", c.p, 0},
+                                   std::tuple<std::string, long, long>{"matrix", 1, c.p}}) {
+      const Pattern pat = build(id, k, p);
+      EXPECT_LT(rel(pat.packing.d, c.d), 2e-15) << id << " p=" << c.p;
+      EXPECT_EQ(pat.bonds.size(), c.bonds) << id << " p=" << c.p;
+      EXPECT_EQ(pat.rattlers.size(), c.rattlers) << id << " p=" << c.p;
+    }
+  }
+  // CONSTRUCTIONS: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11), exactly.
+  const long double s3 = std::sqrt(3.0L), s11 = std::sqrt(11.0L);
+  EXPECT_LT(rel(build("even-ripple", 3).packing.d, 5 * s3 / (20 * s3 + 7 + 2 * s11)), 1e-17);
+}
+
+TEST(Twin, PapersBondCounts) {
+  // GL1995 Figs.t7, t17, t31, t49 and Sec.5: t7a13, t7a16, t17a40, t17a42, t17a43, t31a79,
+  // t31a81.1, t31a81.2, t31a82, t49a130.
+  struct Case {
+    long k;
+    const char* variant;
+    std::size_t bonds;
+  };
+  for (const Case& c : {Case{1, "rattler", 13}, Case{1, "full", 16}, Case{2, "rattler", 40},
+                        Case{2, "cavity-1", 42}, Case{2, "full", 43}, Case{3, "rattler", 79},
+                        Case{3, "cavity-1", 81}, Case{3, "cavity-2", 81}, Case{3, "full", 82},
+                        Case{4, "rattler", 130}}) {
+    const Pattern pat = build("twin", c.k, 0, c.variant);
+    EXPECT_EQ(pat.bonds.size(), c.bonds) << "k=" << c.k << " " << c.variant;
+    EXPECT_EQ(pat.rattlers.size(), std::string(c.variant) == "rattler" ? 1u : 0u);
+  }
+  // GL1995 Sec.5: t24a has 63 bonds and t40a 108 (4Delta(3), 4Delta(4)).
+  EXPECT_EQ(build("four-delta", 3).bonds.size(), 63u);
+  EXPECT_EQ(build("four-delta", 4).bonds.size(), 108u);
+}
+
+TEST(Classes, ClosedFormsOfConstructions) {
+  // CONSTRUCTIONS "Closed forms that follow": d(11) = (3 - sqrt6)/2, d(8) = (sqrt33 - 3)/8,
+  // d(13) = 3/(6 + sqrt6 + 2 sqrt3), d(25) = 1/(4 + sqrt(11/3)), d(42) = 3/(18 + sqrt6 + 2 sqrt3).
+  // The polished d carries long double accuracy; 1e-17 leaves a factor ~100 over its rounding.
+  const long double s3 = std::sqrt(3.0L), s6 = std::sqrt(6.0L);
+  EXPECT_LT(rel(build("even-ripple", 2).packing.d, (3 - s6) / 2), 1e-17);
+  EXPECT_LT(rel(build("sparse-rows", 2).packing.d, (std::sqrt(33.0L) - 3) / 8), 1e-17);
+  EXPECT_LT(rel(build("sparse-rows", 3).packing.d, 3 / (6 + s6 + 2 * s3)), 1e-17);
+  EXPECT_LT(rel(build("pairs", 2).packing.d, 1 / (4 + std::sqrt(11.0L / 3))), 1e-17);
+  EXPECT_LT(rel(build("pairs", 3).packing.d, 3 / (18 + s6 + 2 * s3)), 1e-17);
+  // t8a has 18 bonds (CONSTRUCTIONS §5-6); pairs: 30, 63, 108, 165 bonds for n = 12, 25, 42, 63.
+  EXPECT_EQ(build("sparse-rows", 2).bonds.size(), 18u);
+  for (long k = 1; k <= 4; ++k)
+    EXPECT_EQ(build("pairs", k).bonds.size(),
+              (std::vector<std::size_t>{30, 63, 108, 165})[static_cast<std::size_t>(k - 1)]);
+}
+
+TEST(Matrix, CompressionLemma) {
+  // CONSTRUCTIONS §4b: L(n_p(k)) = L(Delta(2p)+1) + (p+1)(k-1), with both sides polished
+  // independently; rounding of two long double polishes, 1e-17 relative.
+  for (long p = 1; p <= 6; ++p) {
+    const long double lambda = 1 / build("even-ripple", p).packing.d;
+    for (long k = 1; k <= 6; ++k) {
+      const long double L = 1 / build("matrix", k, p).packing.d;
+      EXPECT_LT(rel(L, lambda + (p + 1) * (k - 1.0L)), 1e-17) << "p=" << p << " k=" << k;
+    }
+  }
+  // Row p=1 is 4Delta(k); column k=2 is Delta(3p+1)+2 (GL1995 Sec.6).
+  for (long k = 1; k <= 8; ++k) {
+    const Pattern a = build("matrix", k, 1), b = build("four-delta", k);
+    EXPECT_LT(rel(a.packing.d, b.packing.d), 1e-17);
+    EXPECT_EQ(a.bonds.size(), b.bonds.size());
+    const Pattern c = build("matrix", 2, k), e = build("ripple-of-pairs", k);
+    EXPECT_LT(rel(c.packing.d, e.packing.d), 1e-17);
+    EXPECT_EQ(c.bonds.size(), e.bonds.size());
+  }
+  // GL1995 Sec.6: 255 = n_7(2) has 6 rattlers and 256 = n_5(3) has 4.
+  EXPECT_EQ(build("matrix", 2, 7).rattlers.size(), 6u);
+  EXPECT_EQ(build("matrix", 3, 5).rattlers.size(), 4u);
+}
+
+TEST(OddRipple, PapersDepressedCagePackings) {
+  // GL1995 Figs.t29, t46, t67, t92 and Sec.5: t29b63.2, t46b106.2, t67a161.2, t92a228.2 and
+  // t121a307.2 (307 bonds, 6 rattlers, d(121) = 0.0691630188894699).
+  const std::vector<std::size_t> bonds{63, 106, 161, 228, 307};
+  for (long k = 3; k <= 7; ++k) {
+    const Pattern pat = build("odd-ripple", k);
+    EXPECT_EQ(pat.packing.size(), static_cast<std::size_t>(triangular(2 * k + 1) + 1));
+    EXPECT_EQ(pat.bonds.size(), bonds[static_cast<std::size_t>(k - 3)]) << k;
+    EXPECT_EQ(pat.rattlers.size(), static_cast<std::size_t>(k - 1)) << k;
+  }
+  // The printed d(121) is one unit high in its 15th significant digit (CONSTRUCTIONS §8.3: the
+  // exact construction gives 0.06916301888946975...): allow 1.5 units of that digit.
+  EXPECT_NEAR(build("odd-ripple", 7).packing.d, 0.0691630188894699L, 1.5e-16L);
+}
+
+TEST(Classes, RecordedBondsAreExactlyTheGeometricContacts) {
+  // The chain family and class 7 record their bonds from the construction. Where every non-bond
+  // gap is resolvable (sparse-rows k <= 10: smallest gap 2e-8 > 1e-10), contacts detected from
+  // the geometry alone must be the same set.
+  auto detected = [](const Pattern& pat) {
+    const long double L = 1 / pat.packing.d;
+    std::vector<Vec2L> x;
+    for (const auto& p : pat.packing.points) x.push_back(p * L);
+    std::vector<char> skip(x.size(), 0);
+    for (int r : pat.rattlers) skip[static_cast<std::size_t>(r)] = 1;
+    return find_contacts(x, L, 1e-10L, skip);
+  };
+  for (const char* id : {"even-ripple", "ripple-of-pairs", "pairs", "sparse-rows", "odd-ripple"}) {
+    const auto& c = catalogue().find(id);
+    for (long k = c.k_min; k <= 10; ++k) {
+      const Pattern pat = build(id, k);
+      EXPECT_EQ(detected(pat), pat.bonds) << id << " k=" << k;
+    }
+  }
+  for (long p = 1; p <= 4; ++p)
+    for (long k = 1; k <= 6; ++k) {
+      const Pattern pat = build("matrix", k, p);
+      EXPECT_EQ(detected(pat), pat.bonds) << "matrix p=" << p << " k=" << k;
+    }
+}
+
+TEST(SparseRows, NearDegenerateGapsAreNotBonds) {
+  // CONSTRUCTIONS §5-6: the closest raised pair is 1 + 3.1e-6 apart at k = 11 and 1 + 1.9e-8 at
+  // k = 12 (two printed digits). Other contacts degenerate faster (we measure the corner floor
+  // pair F0-F1 at 2.6e-11 and 9e-16, k = 11, 12). The pattern stays valid with exactly the
+  // formula's bonds, and every non-bond gap stays positive.
+  for (auto [k, gap] :
+       {std::pair<long, long double>{11, 3.1e-6L}, std::pair<long, long double>{12, 1.9e-8L}}) {
+    const Pattern pat = build("sparse-rows", k);
+    EXPECT_EQ(pat.bonds.size(), static_cast<std::size_t>(3 * k * (k - 1) / 2 + 6 * k + 3));
+    const long double L = 1 / pat.packing.d;
+    auto raised = [&](int i) {
+      const long double y = pat.packing.points[static_cast<std::size_t>(i)].y * L;
+      return y > 0.5L && y < 1.2L;  // raised row at ~sqrt3/2; floor at 0, anchors at ~sqrt3
+    };
+    long double smallest = 1, smallest_raised = 1;
+    for_each_pair_within(
+        pat.packing.points, 1.5L * pat.packing.d, [&](int i, int j, long double dist) {
+          if (std::binary_search(pat.bonds.begin(), pat.bonds.end(), Bond::pair(i, j))) return;
+          smallest = std::min(smallest, dist * L - 1);
+          if (raised(i) && raised(j)) smallest_raised = std::min(smallest_raised, dist * L - 1);
+        });
+    EXPECT_GT(smallest, 0) << k;
+    EXPECT_NEAR(smallest_raised, gap, 0.05L * gap) << k;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Every class and variant, k = 1..12: valid, bonds and rattlers as the catalogue predicts.
+
+TEST(Classes, EveryBuilderIsValidAndMatchesTheCatalogueUpToK12) {
+  for (const auto& c : catalogue().classes()) {
+    const long p_max = c.has_p ? 5 : 0;
+    for (long p = c.has_p ? 1 : 0; p <= p_max; ++p) {
+      for (long k = c.k_min; k <= 12 && (!c.k_max || k <= c.k_max); ++k) {
+        for (const auto& v : catalogue().variants_at(c, k).empty()
+                                 ? std::vector<std::string>{""}
+                                 : catalogue().variants_at(c, k)) {
+          const std::string what =
+              c.id + " k=" + std::to_string(k) + " p=" + std::to_string(p) + " " + v;
+          const Pattern pat = build(c.id, k, p, v);
+          EXPECT_EQ(static_cast<long long>(pat.packing.size()), catalogue().n_of(c, k, p)) << what;
+          expect_valid_packing(pat, what);
+          if (const auto b = catalogue().bonds_of(c, k, p, v); b && c.rigid) {
+            EXPECT_EQ(static_cast<long long>(pat.bonds.size()), *b) << what;
+          }
+          if (const auto r = catalogue().rattlers_of(c, k, p, v)) {
+            EXPECT_EQ(static_cast<long long>(pat.rattlers.size()), *r) << what;
+          }
+          // Every disk that is not a rattler has at least 2 bonds (3 for rigid classes, except the
+          // corner disks of floppy Delta(k)-1); rattlers have none.
+          std::vector<int> degree(pat.packing.size(), 0);
+          for (const auto& b : pat.bonds) {
+            ++degree[static_cast<std::size_t>(b.a)];
+            if (!b.is_wall()) ++degree[static_cast<std::size_t>(b.b)];
+          }
+          for (int r : pat.rattlers) EXPECT_EQ(degree[static_cast<std::size_t>(r)], 0) << what;
+          if (c.rigid) {
+            std::vector<char> is_r(pat.packing.size(), 0);
+            for (int r : pat.rattlers) is_r[static_cast<std::size_t>(r)] = 1;
+            for (std::size_t i = 0; i < degree.size(); ++i)
+              if (!is_r[i]) {
+                EXPECT_GE(degree[i], 3) << what << " disk " << i;
+              }
+          }
+        }
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scale: builders are O(n) and work for huge k.
+
+TEST(Scale, MillionDiskFourDelta) {
+  const Pattern pat = build_four_delta(707);  // 4 Delta(707) = 1,001,112 disks
+  EXPECT_EQ(pat.packing.size(), 1001112u);
+  const long double md = expect_valid_packing(pat, "4Delta(707)");
+  EXPECT_LT(rel(md, 1 / (2 * 706.0L + std::sqrt(3.0L))), measured_tolerance(1 / pat.packing.d));
+  EXPECT_EQ(pat.bonds.size(), static_cast<std::size_t>(6 * 707 * 707 + 3 * 707));
+}
+
+TEST(Scale, LargeMatrixMembers) {
+  for (auto [p, k] : {std::pair<long, long>{3, 100}, std::pair<long, long>{40, 2},
+                      std::pair<long, long>{200, 1}}) {
+    const Pattern pat = build("matrix", k, p, "", false);
+    const auto& c = catalogue().find("matrix");
+    EXPECT_EQ(static_cast<long long>(pat.packing.size()), catalogue().n_of(c, k, p));
+    expect_valid_packing(pat, "matrix p=" + std::to_string(p) + " k=" + std::to_string(k));
+    EXPECT_EQ(static_cast<long long>(pat.bonds.size()), *catalogue().bonds_of(c, k, p, ""));
+    EXPECT_EQ(static_cast<long>(pat.rattlers.size()), p - 1);
+  }
+}
+
+}  // namespace
+}  // namespace tripack
