@@ -121,23 +121,29 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
     }
   }
 
-  // Validity: no overlap, every centre inside.
+  // One pass over near pairs: the worst overlap (validity) and, when detecting, the contacts.
+  Pattern out;
   long double worst_overlap = 0;
-  for_each_pair_within(pts_, 1.0L, [&](int, int, long double dist) {
+  for_each_pair_within(pts_, 1.0L + kBondTolerance, [&](int i, int j, long double dist) {
     worst_overlap = std::max(worst_overlap, 1 - dist);
+    if (mode_ == BondMode::Detect && std::fabs(dist - 1) <= kBondTolerance &&
+        !is_rattler[static_cast<std::size_t>(i)] && !is_rattler[static_cast<std::size_t>(j)])
+      out.bonds.push_back(Bond::pair(i, j));
   });
   if (worst_overlap > kBondTolerance)
     throw std::runtime_error("constructed pattern overlaps by " +
                              std::to_string(static_cast<double>(worst_overlap)));
-  for (const auto& p : pts_)
-    for (Side s : kSides)
-      if (wall_distance(p, s, L_) < -kBondTolerance)
+  for (std::size_t i = 0; i < n; ++i) {
+    for (Side s : kSides) {
+      const long double w = wall_distance(pts_[i], s, L_);
+      if (w < -kBondTolerance)
         throw std::runtime_error("constructed pattern has a centre outside the triangle");
-
-  Pattern out;
+      if (mode_ == BondMode::Detect && w <= kBondTolerance && !is_rattler[i])
+        out.bonds.push_back(Bond::wall(static_cast<int>(i), s));
+    }
+  }
   switch (mode_) {
     case BondMode::Detect:
-      out.bonds = find_contacts(pts_, L_, kBondTolerance, is_rattler);
       break;
     case BondMode::Set:
       out.bonds = bonds_;
@@ -166,7 +172,7 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
   out.packing.d = 1.0L / L_;
   out.packing.points.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    // Clamp rounding-level excursions (|.| <= 1e-10) back onto the sides.
+    // Floor disks may sit a rounding below y = 0: clamp them onto the floor.
     Vec2L p = pts_[i] / L_;
     p.y = std::max(p.y, 0.0L);
     out.packing.points[i] = p;

@@ -61,54 +61,49 @@ RippleChain solve_ripple_chain(int q, int step) {
   c.floor.assign(static_cast<std::size_t>(q + 1), {});
   c.raised.assign(static_cast<std::size_t>(q), {});
 
-  // The physical root is the largest X < 1 (CONSTRUCTIONS §4a): scan down from X = 1. At X = 1
-  // the residual is within rounding of zero when the root is closer to 1 than long double can
-  // resolve (step 1, q >= 11); then X = 1 is the root to working precision.
+  // The physical root is the largest X < 1 (CONSTRUCTIONS §4a), and f = F_0.x grows with X. For
+  // long chains (step 2, q >= ~250) the march from the axis cannot even be completed slightly
+  // above the root (some floor disk ends more than 2 from its anchor): that side counts as
+  // f > 0, and bisection then closes in on the root from both sides.
+  // At X = 1 the residual is within rounding of zero when the root is closer to 1 than long
+  // double resolves (step 1, q >= 11); then X = 1 is the root to working precision.
   const long double noise = 64 * std::numeric_limits<long double>::epsilon() * (q + 1) * step;
+  auto too_large = [&](long double x) {
+    const auto f = march_left(c, x);
+    return !f || *f > 0;
+  };
   const auto f_one = march_left(c, 1.0L);
   if (f_one && std::fabs(*f_one) <= noise) {
     march_left(c, 1.0L);
   } else {
-    // Bracket [lo, hi] with f(lo), f(hi) of opposite signs, scanning down in steps of 1e-3.
-    bool have_hi = f_one.has_value();
-    long double hi = 1.0L, f_hi = f_one.value_or(0.0L);
-    long double lo = 0, f_lo = 0;
+    if (!too_large(1.0L))
+      throw std::runtime_error("ripple chain: residual negative at X = 1 for q=" + std::to_string(q));
+    long double hi = 1.0L, lo = 0;
     bool bracketed = false;
-    for (int j = 1; j <= 500 && !bracketed; ++j) {
+    for (int j = 1; j <= 700 && !bracketed; ++j) {  // down to X = 0.3
       const long double x = 1.0L - j * 1e-3L;
-      const auto f = march_left(c, x);
-      if (!f) continue;
-      if (have_hi && ((*f > 0) != (f_hi > 0) || *f == 0)) {
-        lo = x;
-        f_lo = *f;
-        bracketed = true;
-      } else {
-        hi = x;
-        f_hi = *f;
-        have_hi = true;
-      }
+      if (too_large(x)) hi = x;
+      else { lo = x; bracketed = true; }
     }
     if (!bracketed)
       throw std::runtime_error("ripple chain: no root for q=" + std::to_string(q) +
                                " step=" + std::to_string(step));
     // Bisection to the last bit: the march is cheap and bisection cannot be fooled by noise.
     for (int it = 0; it < 200; ++it) {
-      const long double midx = (lo + hi) / 2;
-      if (midx <= lo || midx >= hi) break;
-      const auto f = march_left(c, midx);
-      if (!f) {
-        lo = midx;
-        continue;
-      }
-      if ((*f > 0) == (f_lo > 0)) {
-        lo = midx;
-        f_lo = *f;
-      } else {
-        hi = midx;
-        f_hi = *f;
-      }
+      const long double mid = (lo + hi) / 2;
+      if (mid <= lo || mid >= hi) break;
+      (too_large(mid) ? hi : lo) = mid;
     }
-    march_left(c, std::fabs(f_hi) < std::fabs(f_lo) ? hi : lo);
+    const auto f_lo = march_left(c, lo);
+    const auto f_hi = march_left(c, hi);
+    const bool use_hi = f_hi && std::fabs(*f_hi) < std::fabs(*f_lo);
+    const long double f = use_hi ? *f_hi : *f_lo;
+    march_left(c, use_hi ? hi : lo);
+    // The corner is set exactly below, which moves the first contact by f: it must be tiny.
+    if (!(std::fabs(f) <= 1e-12L))
+      throw std::runtime_error("ripple chain: q=" + std::to_string(q) +
+                               " cannot be closed in long double (residual " +
+                               std::to_string(static_cast<double>(f)) + ")");
   }
   // The corner is exactly at the origin by the equation; mirror the left half to the right.
   c.floor[0] = {0, 0};

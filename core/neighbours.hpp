@@ -51,6 +51,9 @@ void for_each_pair_within(const std::vector<Vec2T<T>>& pts, T radius, F&& f) {
     for (std::size_t i = 0; i < n; ++i) order[fill[cells[i]]++] = static_cast<int>(i);
   }
   const T r2 = radius * radius;
+  // Prefilter in double (fast SSE arithmetic even when T is long double): a pair is examined in
+  // T only if its double distance is within a relative 1e-9 of the radius.
+  const double r2_filter = static_cast<double>(r2) * (1 + 1e-9) + 1e-300;
   static constexpr int kStencil[5][2] = {{0, 0}, {1, 0}, {-1, 1}, {0, 1}, {1, 1}};
   for (std::int64_t cy = 0; cy < ny; ++cy) {
     for (std::int64_t cx = 0; cx < nx; ++cx) {
@@ -63,6 +66,9 @@ void for_each_pair_within(const std::vector<Vec2T<T>>& pts, T radius, F&& f) {
           const auto b0 = (o == c) ? a + 1 : start[o];
           for (auto b = b0; b < start[o + 1]; ++b) {
             const int i = order[a], j = order[b];
+            const double dx = static_cast<double>(pts[i].x) - static_cast<double>(pts[j].x);
+            const double dy = static_cast<double>(pts[i].y) - static_cast<double>(pts[j].y);
+            if (dx * dx + dy * dy > r2_filter) continue;
             const auto dv = pts[i] - pts[j];
             const T q = dot(dv, dv);
             if (q <= r2) {

@@ -1,6 +1,7 @@
 // constructors/chain: the one-unknown ripple chain against the closed forms of CONSTRUCTIONS.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "constructors/chain.hpp"
@@ -55,6 +56,29 @@ TEST(RippleChain, EveryContactHoldsAndTheCornersAreExact) {
       }
     }
   }
+}
+
+TEST(RippleChain, LongChainsCloseAndXDecreases) {
+  // Long chains (step 2, q >= ~250) cannot be marched just above their root; the solver must
+  // still find it. X_p decreases slowly with p (CONSTRUCTIONS §4a, "X_p decreases slowly").
+  long double previous = 1;
+  for (int q : {1, 2, 3, 5, 10, 20, 50, 100, 200, 300, 700}) {
+    const RippleChain c = solve_ripple_chain(q, 2);
+    EXPECT_LT(c.X, previous) << q;
+    previous = c.X;
+    long double worst = 0;
+    for (int i = 0; i < q; ++i) {
+      const auto& r = c.raised[static_cast<std::size_t>(i)];
+      worst = std::max(worst, std::fabs(norm(r - c.floor[static_cast<std::size_t>(i)]) - 1));
+      worst = std::max(worst, std::fabs(norm(r - c.floor[static_cast<std::size_t>(i + 1)]) - 1));
+      worst = std::max(worst, std::fabs(norm(r - c.anchor(i)) - 1));
+    }
+    // Measured: 3e-17 at q = 200, 1.5e-16 at q = 300..700 (the march amplifies rounding).
+    EXPECT_LT(worst, 1e-15L) << q;
+  }
+  // The paper's bound on lim delta(Delta(k)+1) is 2/sqrt3 - 1 (GL1995 Sec.6), which needs
+  // X_p -> 1/sqrt3 from above: every X_p stays above it.
+  EXPECT_GT(previous, 1 / std::sqrt(3.0L));
 }
 
 TEST(RippleChain, RejectsBadArguments) {
