@@ -291,11 +291,12 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
         if (!v.empty()) j["variant"] = v;
         std::cout << j.dump() << "\n";
       } else {
-        std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10.2e} {:>10} {}{}\n", k,
+        std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}{}\n", k,
                                  b.pattern.packing.size(), v, format_significant(d, 17),
-                                 L ? format_significant(1 / *L, 17) : "-", static_cast<double>(rel),
-                                 count_vs(b.pattern.bonds.size(), b.bonds_expected), source,
-                                 ok ? "" : "  FAIL");
+                                 L ? format_significant(1 / *L, 17) : "-",
+                                 L ? fmt::format("{:.2e}", static_cast<double>(rel)) : "-",
+                                 count_vs(b.pattern.bonds.size(), b.bonds_expected),
+                                 L ? source : "no formula for L in the catalogue", ok ? "" : "  FAIL");
       }
     }
   }
