@@ -1,23 +1,14 @@
 #include "analysis/polish.hpp"
 
-#include <Eigen/SPQRSupport>
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "analysis/bond_system.hpp"
+
 namespace tripack {
 
-namespace {
-
-using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, SuiteSparse_long>;
-
-// Unknown layout: column 2*u, 2*u+1 for the u-th non-rattler disk, last column for L.
-struct Layout {
-  std::vector<int> column;  // per disk: first column, or -1 for rattlers
-  int unknowns = 0;
-  int l_column = 0;
-};
+namespace bond_system {
 
 Layout make_layout(std::size_t n, const std::vector<int>& rattlers) {
   Layout lay;
@@ -35,21 +26,11 @@ Layout make_layout(std::size_t n, const std::vector<int>& rattlers) {
   return lay;
 }
 
-long double residual(const Bond& b, const std::vector<Vec2L>& x, long double L) {
-  const auto& p = x[static_cast<std::size_t>(b.a)];
-  if (b.is_wall()) return wall_distance(p, b.side(), L);
-  return norm(p - x[static_cast<std::size_t>(b.b)]) - 1.0L;
-}
-
-void residuals(const std::vector<Bond>& bonds, const std::vector<Vec2L>& x, long double L,
-               Eigen::VectorXd& r, long double& max_abs, long double& sum_sq) {
-  max_abs = 0;
-  sum_sq = 0;
-  for (std::size_t e = 0; e < bonds.size(); ++e) {
-    const long double v = residual(bonds[e], x, L);
-    r[static_cast<Eigen::Index>(e)] = static_cast<double>(v);
-    max_abs = std::max(max_abs, std::fabs(v));
-    sum_sq += v * v;
+void check_bonds(std::size_t n, const std::vector<Bond>& bonds) {
+  for (const auto& b : bonds) {
+    if (b.a < 0 || static_cast<std::size_t>(b.a) >= n ||
+        (!b.is_wall() && static_cast<std::size_t>(b.b) >= n))
+      throw std::invalid_argument("polish: bond refers to a disk that does not exist");
   }
 }
 
@@ -88,6 +69,31 @@ SpMat jacobian(const std::vector<Bond>& bonds, const std::vector<Vec2L>& x, cons
   return J;
 }
 
+}  // namespace bond_system
+
+namespace {
+
+using bond_system::Layout;
+using bond_system::SpMat;
+
+long double residual(const Bond& b, const std::vector<Vec2L>& x, long double L) {
+  const auto& p = x[static_cast<std::size_t>(b.a)];
+  if (b.is_wall()) return wall_distance(p, b.side(), L);
+  return norm(p - x[static_cast<std::size_t>(b.b)]) - 1.0L;
+}
+
+void residuals(const std::vector<Bond>& bonds, const std::vector<Vec2L>& x, long double L,
+               Eigen::VectorXd& r, long double& max_abs, long double& sum_sq) {
+  max_abs = 0;
+  sum_sq = 0;
+  for (std::size_t e = 0; e < bonds.size(); ++e) {
+    const long double v = residual(bonds[e], x, L);
+    r[static_cast<Eigen::Index>(e)] = static_cast<double>(v);
+    max_abs = std::max(max_abs, std::fabs(v));
+    sum_sq += v * v;
+  }
+}
+
 void apply_step(std::vector<Vec2L>& x, long double& L, const Layout& lay, const Eigen::VectorXd& dz,
                 long double scale) {
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -106,12 +112,8 @@ PolishReport polish_bond_system_disk_units(std::vector<Vec2L>& x, long double& L
                                            const std::vector<int>& rattlers,
                                            const PolishOptions& options) {
   PolishReport rep;
-  const Layout lay = make_layout(x.size(), rattlers);
-  for (const auto& b : bonds) {
-    if (b.a < 0 || static_cast<std::size_t>(b.a) >= x.size() ||
-        (!b.is_wall() && static_cast<std::size_t>(b.b) >= x.size()))
-      throw std::invalid_argument("polish: bond refers to a disk that does not exist");
-  }
+  const Layout lay = bond_system::make_layout(x.size(), rattlers);
+  bond_system::check_bonds(x.size(), bonds);
   rep.unknowns = lay.unknowns;
   rep.equations = static_cast<int>(bonds.size());
   if (bonds.empty()) {
@@ -130,7 +132,7 @@ PolishReport polish_bond_system_disk_units(std::vector<Vec2L>& x, long double& L
     // Newton with a reused factorization converges linearly at rate ~ (change in J); refactor
     // whenever the residual is not small or the reused factor stops paying off.
     if (!have_factor || max_abs > 1e-8L) {
-      const SpMat J = jacobian(bonds, x, lay);
+      const SpMat J = bond_system::jacobian(bonds, x, lay);
       qr.compute(J);
       if (qr.info() != Eigen::Success) throw std::runtime_error("polish: sparse QR failed");
       rep.rank = static_cast<int>(qr.rank());

@@ -9,11 +9,79 @@
 
 namespace tripack {
 
+void DiskUnitsPattern::set_side(long double side) {
+  if (tracks_exact_) throw std::logic_error("set_side on an exact pattern");
+  L_ = side;
+}
+
+void DiskUnitsPattern::reserve(std::size_t n) {
+  pts_.reserve(n);
+  if (tracks_exact_) {
+    ex_.reserve(n);
+    known_.reserve(n);
+  }
+}
+
+int DiskUnitsPattern::add_exact(const ExactPoint& p) {
+  if (!tracks_exact_) throw std::logic_error("exact disk added to an inexact pattern");
+  pts_.push_back(p.value());
+  ex_.push_back(p);
+  known_.push_back(1);
+  return static_cast<int>(pts_.size()) - 1;
+}
+
+void DiskUnitsPattern::move_exact(int i, const ExactPoint& p) {
+  if (!tracks_exact_) throw std::logic_error("exact move in an inexact pattern");
+  const auto u = static_cast<std::size_t>(i);
+  pts_.at(u) = p.value();
+  ex_[u] = p;
+  known_[u] = 1;
+}
+
+void DiskUnitsPattern::erase(int i) {
+  if (i < 0 || static_cast<std::size_t>(i) >= pts_.size())
+    throw std::out_of_range("DiskUnitsPattern::erase");
+  pts_.erase(pts_.begin() + i);
+  if (tracks_exact_) {
+    ex_.erase(ex_.begin() + i);
+    known_.erase(known_.begin() + i);
+  }
+  auto shift = [i](int j) { return j > i ? j - 1 : j; };
+  std::erase(rattlers_, i);
+  for (int& r : rattlers_) r = shift(r);
+  std::erase_if(recorded_, [i](const Bond& b) { return b.a == i || b.b == i; });
+  for (Bond& b : recorded_)
+    b = b.is_wall() ? Bond{shift(b.a), b.b} : Bond::pair(shift(b.a), shift(b.b));
+}
+
 int DiskUnitsPattern::add_triangle(const Vec2L& corner, const Vec2L& a, const Vec2L& b, long k) {
   const int first = static_cast<int>(pts_.size());
   for (long i = 0; i < k; ++i)
     for (long j = 0; i + j < k; ++j)
       pts_.push_back(corner + a * static_cast<long double>(i) + b * static_cast<long double>(j));
+  sync_exact();
+  record_triangle_bonds(first, k);
+  return first;
+}
+
+int DiskUnitsPattern::add_triangle(const ExactPoint& corner, const ExactPoint& a,
+                                   const ExactPoint& b, long k) {
+  if (!tracks_exact_) throw std::logic_error("exact triangle added to an inexact pattern");
+  const int first = static_cast<int>(pts_.size());
+  for (long i = 0; i < k; ++i) {
+    const ExactPoint row = corner + a * i;
+    for (long j = 0; i + j < k; ++j) {
+      const ExactPoint p = row + b * j;
+      pts_.push_back(p.value());
+      ex_.push_back(p);
+      known_.push_back(1);
+    }
+  }
+  record_triangle_bonds(first, k);
+  return first;
+}
+
+void DiskUnitsPattern::record_triangle_bonds(int first, long k) {
   // Lattice neighbours of (i, j): (i+1, j), (i, j+1) and (i-1, j+1) (|b - a| = 1).
   auto id = [&](long i, long j) { return first + static_cast<int>(index_in_triangle(k, i, j)); };
   for (long i = 0; i < k; ++i) {
@@ -25,7 +93,6 @@ int DiskUnitsPattern::add_triangle(const Vec2L& corner, const Vec2L& a, const Ve
       if (i >= 1) recorded_.push_back(Bond::pair(id(i, j), id(i - 1, j + 1)));
     }
   }
-  return first;
 }
 
 std::vector<int> DiskUnitsPattern::triangle_edge(int first, long k, Edge e) {
@@ -170,6 +237,20 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
   out.rattlers = rattlers_;
   out.provenance = std::move(provenance);
   out.packing.d = 1.0L / L_;
+  if (tracks_exact_) {
+    // Points pushed through points() have no exact data; rattlers were moved numerically. A known
+    // disk must still be where its exact coordinates say (nobody moved it through points()).
+    sync_exact();
+    for (int r : rattlers_) known_[static_cast<std::size_t>(r)] = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!known_[i]) continue;
+      const Vec2L v = ex_[i].value() - pts_[i];
+      if (std::fabs(v.x) > kBondTolerance || std::fabs(v.y) > kBondTolerance)
+        throw std::logic_error("disk " + std::to_string(i) + " moved away from its exact position");
+    }
+    out.exact = ExactDiskUnits{exact_L_, std::move(ex_), std::move(known_)};
+    tracks_exact_ = false;  // the exact data have moved out
+  }
   out.packing.points.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     // Floor disks may sit a rounding below y = 0: clamp them onto the floor.

@@ -77,13 +77,18 @@ RippleChain solve_ripple_chain(int q, int step) {
     march_left(c, 1.0L);
   } else {
     if (!too_large(1.0L))
-      throw std::runtime_error("ripple chain: residual negative at X = 1 for q=" + std::to_string(q));
+      throw std::runtime_error("ripple chain: residual negative at X = 1 for q=" +
+                               std::to_string(q));
     long double hi = 1.0L, lo = 0;
     bool bracketed = false;
     for (int j = 1; j <= 700 && !bracketed; ++j) {  // down to X = 0.3
       const long double x = 1.0L - j * 1e-3L;
-      if (too_large(x)) hi = x;
-      else { lo = x; bracketed = true; }
+      if (too_large(x))
+        hi = x;
+      else {
+        lo = x;
+        bracketed = true;
+      }
     }
     if (!bracketed)
       throw std::runtime_error("ripple chain: no root for q=" + std::to_string(q) +

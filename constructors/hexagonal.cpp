@@ -7,21 +7,21 @@
 namespace tripack {
 
 namespace {
-using D = Directions<long double>;
+using E = ExactDirections;
 }
 
 Pattern build_hexagonal(long k) {
   if (k < 2) throw std::invalid_argument("Delta(k) needs k >= 2");
-  DiskUnitsPattern pat(static_cast<long double>(k - 1));
-  pat.add_triangle({0, 0}, D::e0, D::e60, k);
+  DiskUnitsPattern pat(HalfSurd3::integer(k - 1));
+  pat.add_triangle(ExactPoint{}, E::e0, E::e60, k);
   return pat.finish({});
 }
 
 Pattern build_hexagonal_minus_one(long k) {
   if (k < 2) throw std::invalid_argument("Delta(k)-1 needs k >= 2");
-  DiskUnitsPattern pat(static_cast<long double>(k - 1));
-  pat.add_triangle({0, 0}, D::e0, D::e60, k);
-  pat.points().erase(pat.points().begin());  // the bottom-left corner disk
+  DiskUnitsPattern pat(HalfSurd3::integer(k - 1));
+  pat.add_triangle(ExactPoint{}, E::e0, E::e60, k);
+  pat.erase(0);  // the bottom-left corner disk
   return pat.finish({});
 }
 

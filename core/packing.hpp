@@ -1,9 +1,11 @@
 // Value types every stage shares: Bond, Packing, Pattern.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/exact.hpp"
 #include "core/geometry.hpp"
 
 namespace tripack {
@@ -43,6 +45,7 @@ struct Pattern {
   std::vector<Bond> bonds;    // sorted, unique; rattlers carry none
   std::vector<int> rattlers;  // sorted disk indices
   Provenance provenance;
+  std::optional<ExactDiskUnits> exact;  // closed-form builders only
 };
 
 // n(k) helper used everywhere: Delta(k) = k(k+1)/2.

@@ -9,6 +9,7 @@ PKGS=(
   libboost-dev libboost-graph-dev  # contact graphs, multiprecision (header-only)
   libgmp-dev libmpfr-dev            # multiprecision backends
   libsuitesparse-dev   # SuiteSparseQR: fast rank-revealing sparse QR for the polisher
+  coinor-libclp-dev    # COIN-OR CLP, the LP solver of relax, the rigidity test, the stress certificate
   libyaml-cpp-dev      # classes.yaml and scenes
   libcli11-dev         # command line
   libfmt-dev           # formatting

@@ -1,0 +1,133 @@
+#include "analysis/bonds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/neighbours.hpp"
+
+namespace tripack {
+
+namespace {
+
+// Contact direction from disk i towards the contact point.
+Vec2L contact_direction(const Packing& pk, const Bond& b, int i) {
+  if (b.is_wall()) return -wall_normal<long double>(b.side());
+  const int j = b.a == i ? b.b : b.a;
+  const Vec2L v = pk.points[static_cast<std::size_t>(j)] - pk.points[static_cast<std::size_t>(i)];
+  return v / norm(v);
+}
+
+// True if the directions surround the origin strictly: every angular gap below pi.
+bool surrounds(std::vector<long double> angles) {
+  if (angles.size() < 3) return false;
+  std::sort(angles.begin(), angles.end());
+  long double widest = angles.front() + 2 * std::numbers::pi_v<long double> - angles.back();
+  for (std::size_t a = 1; a < angles.size(); ++a)
+    widest = std::max(widest, angles[a] - angles[a - 1]);
+  return widest < std::numbers::pi_v<long double> - 1e-9L;
+}
+
+}  // namespace
+
+std::vector<int> find_rattlers(const Packing& pk, std::vector<Bond>& bonds) {
+  const std::size_t n = pk.size();
+  std::vector<char> rattler(n, 0);
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<std::vector<long double>> angles(n);
+    for (const auto& b : bonds) {
+      for (int i : {b.a, b.b}) {
+        if (i < 0) continue;
+        const Vec2L v = contact_direction(pk, b, i);
+        angles[static_cast<std::size_t>(i)].push_back(std::atan2(v.y, v.x));
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!rattler[i] && !surrounds(angles[i])) {
+        rattler[i] = 1;
+        changed = true;
+      }
+    }
+    std::erase_if(bonds, [&](const Bond& b) {
+      return rattler[static_cast<std::size_t>(b.a)] ||
+             (!b.is_wall() && rattler[static_cast<std::size_t>(b.b)]);
+    });
+  }
+  std::vector<int> out;
+  for (std::size_t i = 0; i < n; ++i)
+    if (rattler[i]) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+std::vector<Gap> smallest_gaps(const Packing& pk, const std::vector<Bond>& bonds,
+                               std::size_t count) {
+  std::vector<char> bonded_rattler(pk.size(), 1);  // a disk with no bonds at all is a rattler here
+  for (const auto& b : bonds) {
+    bonded_rattler[static_cast<std::size_t>(b.a)] = 0;
+    if (!b.is_wall()) bonded_rattler[static_cast<std::size_t>(b.b)] = 0;
+  }
+  std::vector<Gap> gaps;
+  for_each_pair_within(pk.points, pk.d * 1.25L, [&](int i, int j, long double r) {
+    const Bond b = Bond::pair(i, j);
+    if (std::binary_search(bonds.begin(), bonds.end(), b)) return;
+    gaps.push_back({b, r / pk.d - 1,
+                    bonded_rattler[static_cast<std::size_t>(i)] ||
+                        bonded_rattler[static_cast<std::size_t>(j)]});
+  });
+  for (std::size_t i = 0; i < pk.size(); ++i) {
+    for (Side s : kSides) {
+      const long double w = wall_distance(pk.points[i], s, 1.0L);
+      const Bond b = Bond::wall(static_cast<int>(i), s);
+      if (w > 0.25L * pk.d || std::binary_search(bonds.begin(), bonds.end(), b)) continue;
+      gaps.push_back({b, w / pk.d, static_cast<bool>(bonded_rattler[i])});
+    }
+  }
+  std::sort(gaps.begin(), gaps.end(), [](const Gap& a, const Gap& b) { return a.gap < b.gap; });
+  if (gaps.size() > count) gaps.resize(count);
+  return gaps;
+}
+
+BondIdentification identify_bonds(Packing& pk, const std::vector<Bond>& loaded,
+                                  long double gap_threshold) {
+  BondIdentification out;
+  // Candidates: loaded contacts plus near-exact contacts; remember each one's gap.
+  std::vector<std::pair<Bond, long double>> gap_only;
+  std::vector<Bond> cand = loaded;
+  for_each_pair_within(pk.points, pk.d * (1 + gap_threshold), [&](int i, int j, long double r) {
+    cand.push_back(Bond::pair(i, j));
+    gap_only.emplace_back(Bond::pair(i, j), r / pk.d - 1);
+  });
+  for (std::size_t i = 0; i < pk.size(); ++i)
+    for (Side s : kSides) {
+      const long double w = wall_distance(pk.points[i], s, 1.0L);
+      if (w <= gap_threshold * pk.d) {
+        cand.push_back(Bond::wall(static_cast<int>(i), s));
+        gap_only.emplace_back(Bond::wall(static_cast<int>(i), s), w / pk.d);
+      }
+    }
+  std::sort(cand.begin(), cand.end());
+  cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  std::erase_if(gap_only, [&](const auto& g) {
+    return std::binary_search(loaded.begin(), loaded.end(), g.first);
+  });
+  std::sort(gap_only.begin(), gap_only.end(),
+            [](const auto& a, const auto& b) { return a.second > b.second; });
+  out.candidates = static_cast<int>(cand.size());
+
+  const Packing start = pk;
+  for (std::size_t drop = 0;; ++drop) {
+    std::vector<Bond> bonds = cand;
+    out.rattlers = find_rattlers(start, bonds);
+    pk = start;
+    out.polish = polish_bond_system(pk, bonds, out.rattlers);
+    out.bonds = std::move(bonds);
+    if (out.polish.converged || drop >= gap_only.size()) break;
+    // Inconsistent: the widest gap-only candidate is the likeliest false contact.
+    std::erase(cand, gap_only[drop].first);
+    ++out.rejected;
+  }
+  return out;
+}
+
+}  // namespace tripack

@@ -1,0 +1,44 @@
+// Bonds and rattlers of a configuration (SPEC §1-§2): which near contacts are real, which disks
+// are held, and how small the remaining gaps are.
+#pragma once
+
+#include <vector>
+
+#include "analysis/polish.hpp"
+#include "core/packing.hpp"
+
+namespace tripack {
+
+// Rattlers, found iteratively: a disk is held only if it has >= 3 bonds whose contact directions
+// surround its centre strictly (the paper's necessary condition); otherwise it is a rattler, its
+// bonds are removed and its neighbours are re-examined. Removes the rattlers' bonds from `bonds`
+// and returns the rattlers, sorted.
+std::vector<int> find_rattlers(const Packing& packing, std::vector<Bond>& bonds);
+
+// A non-bond near contact and its gap in units of d (pair: |xi - xj|/d - 1; wall: distance/d).
+struct Gap {
+  Bond contact;
+  long double gap = 0;
+  bool rattler = false;  // involves a rattler (a cage's play)
+};
+// The `count` smallest non-bond gaps, smallest first.
+std::vector<Gap> smallest_gaps(const Packing& packing, const std::vector<Bond>& bonds,
+                               std::size_t count);
+
+struct BondIdentification {
+  std::vector<Bond> bonds;  // after rattler removal
+  std::vector<int> rattlers;
+  PolishReport polish;
+  int candidates = 0;  // contacts considered
+  int rejected = 0;    // gap-only candidates dropped because the bond system had no solution
+};
+
+// From a relaxed configuration: bonds = contacts the relax LP loaded (`loaded`, its positive
+// duals) plus every contact closer than `gap_threshold` * d (duals miss redundant contacts of
+// over-determined systems); rattlers are removed; the bond system is polished; a gap-only
+// candidate that makes the system inconsistent is dropped (largest gap first) and the polish
+// repeated. Polishes `packing` in place.
+BondIdentification identify_bonds(Packing& packing, const std::vector<Bond>& loaded,
+                                  long double gap_threshold = 1e-8L);
+
+}  // namespace tripack

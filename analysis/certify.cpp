@@ -1,0 +1,182 @@
+#include "analysis/certify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "analysis/linear_program.hpp"
+
+namespace tripack {
+
+namespace {
+
+// Columns of the non-rattlers: 2 per disk, -1 for rattlers.
+std::vector<int> motion_columns(std::size_t n, const std::vector<int>& rattlers, int& count) {
+  std::vector<int> col(n, 0);
+  for (int r : rattlers) col[static_cast<std::size_t>(r)] = -1;
+  count = 0;
+  for (auto& c : col)
+    if (c == 0) {
+      c = count;
+      count += 2;
+    }
+  return col;
+}
+
+// The opening-rate row of bond b: coefficients on the motion columns.
+std::vector<std::pair<int, double>> opening_row(const Packing& pk, const Bond& b,
+                                                const std::vector<int>& col) {
+  std::vector<std::pair<int, double>> row;
+  const int ca = col[static_cast<std::size_t>(b.a)];
+  if (b.is_wall()) {
+    const auto nrm = wall_normal<double>(b.side());
+    if (ca >= 0) row = {{ca, nrm.x}, {ca + 1, nrm.y}};
+    return row;
+  }
+  const int cb = col[static_cast<std::size_t>(b.b)];
+  const Vec2L dv =
+      pk.points[static_cast<std::size_t>(b.a)] - pk.points[static_cast<std::size_t>(b.b)];
+  const Vec2L u = dv / norm(dv);
+  if (ca >= 0) {
+    row.emplace_back(ca, static_cast<double>(u.x));
+    row.emplace_back(ca + 1, static_cast<double>(u.y));
+  }
+  if (cb >= 0) {
+    row.emplace_back(cb, static_cast<double>(-u.x));
+    row.emplace_back(cb + 1, static_cast<double>(-u.y));
+  }
+  return row;
+}
+
+// LP values are O(1) for a real motion in the unit box and ~1e-10 for round-off.
+constexpr double kMotionTolerance = 1e-7;
+
+}  // namespace
+
+RigidityReport test_rigidity(const Packing& pk, const std::vector<Bond>& bonds,
+                             const std::vector<int>& rattlers, std::uint64_t seed) {
+  RigidityReport rep;
+  int columns = 0;
+  const auto col = motion_columns(pk.size(), rattlers, columns);
+  if (columns == 0) {
+    rep.rigid = true;
+    return rep;
+  }
+  std::vector<std::vector<std::pair<int, double>>> rows;
+  for (const auto& b : bonds) rows.push_back(opening_row(pk, b, col));
+
+  auto motion_of = [&](const std::vector<double>& x) {
+    std::vector<Vec2L> m(pk.size());
+    for (std::size_t i = 0; i < pk.size(); ++i)
+      if (col[i] >= 0)
+        m[i] = {x[static_cast<std::size_t>(col[i])], x[static_cast<std::size_t>(col[i] + 1)]};
+    return m;
+  };
+
+  // LP 1: can some motion open bonds without closing any?
+  LinearProgram open;
+  std::vector<double> objective(static_cast<std::size_t>(columns), 0.0);
+  for (const auto& row : rows)
+    for (const auto& [c, v] : row) objective[static_cast<std::size_t>(c)] += v;
+  for (int c = 0; c < columns; ++c) open.add_column(-1, 1, objective[static_cast<std::size_t>(c)]);
+  for (const auto& row : rows) open.add_row(0, LinearProgram::kInf, row);
+  const auto s1 = open.solve(true);
+  if (s1.status != LinearProgram::Status::Optimal)
+    throw std::runtime_error("rigidity LP failed (solver status " +
+                             std::to_string(s1.solver_status) + ")");
+  rep.opening = s1.objective;
+  std::vector<double> found;
+  if (rep.opening > kMotionTolerance) found = s1.x;
+
+  // LP 2: a floppy motion keeping every bond at first order (random direction, seeded).
+  if (found.empty()) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    LinearProgram flex;
+    for (int c = 0; c < columns; ++c) flex.add_column(-1, 1, u(rng));
+    for (const auto& row : rows) flex.add_row(0, 0, row);
+    const auto s2 = flex.solve(true);
+    if (s2.status != LinearProgram::Status::Optimal)
+      throw std::runtime_error("rigidity LP failed (solver status " +
+                               std::to_string(s2.solver_status) + ")");
+    rep.floppy = s2.objective;
+    if (rep.floppy > kMotionTolerance) found = s2.x;
+  }
+  rep.rigid = found.empty();
+  if (!rep.rigid) {
+    rep.motion = motion_of(found);
+    long double largest = 0;
+    for (const auto& m : rep.motion) largest = std::max(largest, norm(m));
+    for (const auto& m : rep.motion) rep.moving_disks += norm(m) > 1e-6L * largest;
+    for (const auto& row : rows) {
+      double rate = 0;
+      for (const auto& [c, v] : row) rate += v * found[static_cast<std::size_t>(c)];
+      rep.opening_bonds += rate > kMotionTolerance;
+    }
+  }
+  return rep;
+}
+
+StressReport stress_certificate(const Packing& pk, const std::vector<Bond>& bonds,
+                                const std::vector<int>& rattlers) {
+  StressReport rep;
+  int columns = 0;
+  const auto col = motion_columns(pk.size(), rattlers, columns);
+  LinearProgram lp;
+  for (std::size_t b = 0; b < bonds.size(); ++b) lp.add_column(0, LinearProgram::kInf, 0);
+  const int smallest = lp.add_column(-LinearProgram::kInf, LinearProgram::kInf, 1);
+  // Balance: the force on disk i is sum_b f_b * (d opening_b / d x_i): pairs push along u_ij,
+  // walls along the inward normal. These are the transposed opening rows.
+  std::vector<std::vector<std::pair<int, double>>> balance(static_cast<std::size_t>(columns));
+  std::vector<std::pair<int, double>> pair_sum;
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    for (const auto& [c, v] : opening_row(pk, bonds[b], col))
+      balance[static_cast<std::size_t>(c)].emplace_back(static_cast<int>(b), v);
+    if (!bonds[b].is_wall()) pair_sum.emplace_back(static_cast<int>(b), 1.0);
+  }
+  for (const auto& row : balance) lp.add_row(0, 0, row);
+  lp.add_row(1, 1, pair_sum);
+  for (std::size_t b = 0; b < bonds.size(); ++b)
+    lp.add_row(0, LinearProgram::kInf, {{static_cast<int>(b), 1.0}, {smallest, -1.0}});
+  const auto sol = lp.solve(true);
+  if (sol.status == LinearProgram::Status::Infeasible) return rep;
+  if (sol.status != LinearProgram::Status::Optimal)
+    throw std::runtime_error("stress LP failed (solver status " +
+                             std::to_string(sol.solver_status) + ")");
+  rep.exists = true;
+  rep.forces.assign(sol.x.begin(), sol.x.begin() + static_cast<long>(bonds.size()));
+  rep.min_force = rep.min_pair_force = rep.min_wall_force =
+      std::numeric_limits<long double>::infinity();
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    const long double f = rep.forces[b];
+    rep.min_force = std::min(rep.min_force, f);
+    (bonds[b].is_wall() ? rep.min_wall_force : rep.min_pair_force) =
+        std::min(bonds[b].is_wall() ? rep.min_wall_force : rep.min_pair_force, f);
+  }
+  // Residual of the balance, recomputed in long double with the exact directions.
+  std::vector<Vec2L> net(pk.size());
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    const auto& bd = bonds[b];
+    const long double f = rep.forces[b];
+    if (bd.is_wall()) {
+      net[static_cast<std::size_t>(bd.a)] += wall_normal<long double>(bd.side()) * f;
+      continue;
+    }
+    const Vec2L dv =
+        pk.points[static_cast<std::size_t>(bd.a)] - pk.points[static_cast<std::size_t>(bd.b)];
+    const Vec2L u = dv / norm(dv);
+    net[static_cast<std::size_t>(bd.a)] += u * f;
+    net[static_cast<std::size_t>(bd.b)] -= u * f;
+  }
+  for (std::size_t i = 0; i < pk.size(); ++i)
+    if (col[i] >= 0) rep.residual = std::max(rep.residual, norm(net[i]));
+  // Forces are normalised to sum 1 over ~n pairs, so a real stress has forces ~1/n; 1e-9 is
+  // far below that and far above the LP's round-off.
+  rep.strictly_positive = rep.min_force > 1e-9L;
+  return rep;
+}
+
+}  // namespace tripack

@@ -1,0 +1,45 @@
+// Certificates for a packing with known bonds and rattlers (SPEC §2 step 4).
+//
+// Rigidity: the LP test of Donev, Torquato, Stillinger & Connelly for collective jamming with
+// hard walls. With G the bond-opening map (pair: u_ij.(di - dj), wall: n.di), the packing is
+// jammed when the only first-order motion of the non-rattlers with G d >= 0 is d = 0. Two LPs:
+// max sum(G d) s.t. G d >= 0, |d| <= 1 (> 0: a motion opens bonds), then max c.d s.t. G d = 0,
+// |d| <= 1 for a seeded random c (> 0: a floppy motion that keeps every bond).
+//
+// Stress (KKT): non-negative forces f on the bonds with pair forces summing to 1 that balance
+// every non-rattler (neighbours push apart along u_ij, walls push along their inward normal):
+// exactly the multipliers of "maximize d" at a first-order optimum. We maximize the smallest
+// force; strictly positive stress + rigidity certify a strict local optimum of d.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/packing.hpp"
+
+namespace tripack {
+
+struct RigidityReport {
+  bool rigid = false;
+  double opening = 0;         // optimum of the first LP (0 when jammed)
+  double floppy = 0;          // optimum of the second LP (0 when no bond-preserving motion)
+  int moving_disks = 0;       // disks the found motion moves (by > 1e-6 of the largest move)
+  int opening_bonds = 0;      // bonds the found motion opens
+  std::vector<Vec2L> motion;  // per disk (zero for rattlers); empty when rigid
+};
+RigidityReport test_rigidity(const Packing& packing, const std::vector<Bond>& bonds,
+                             const std::vector<int>& rattlers, std::uint64_t seed = 20261121);
+
+struct StressReport {
+  bool exists = false;             // some non-negative balancing stress exists
+  bool strictly_positive = false;  // one with every bond force > 0
+  long double min_force = 0;       // smallest force of the max-min stress (pairs and walls)
+  long double min_pair_force = 0, min_wall_force = 0;
+  long double residual = 0;         // largest force imbalance on a disk, recomputed in long double
+  std::vector<long double> forces;  // per bond, in the order of `bonds`
+};
+StressReport stress_certificate(const Packing& packing, const std::vector<Bond>& bonds,
+                                const std::vector<int>& rattlers);
+
+}  // namespace tripack

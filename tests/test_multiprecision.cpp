@@ -1,0 +1,202 @@
+// analysis/polish_mp: the bond system polished in MPFR, checked against closed forms evaluated in
+// MPFR (the C API: a light header, unlike the Boost wrappers).
+#include <gtest/gtest.h>
+#include <mpfr.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "analysis/polish_mp.hpp"
+#include "constructors/builders.hpp"
+
+namespace tripack {
+namespace {
+
+// An MPFR number with guard digits beyond what the tests compare.
+struct Num {
+  mpfr_t v;
+  explicit Num(int digits) { mpfr_init2(v, static_cast<mpfr_prec_t>(3.33 * (digits + 20))); }
+  Num(const Num&) = delete;
+  Num& operator=(const Num&) = delete;
+  ~Num() { mpfr_clear(v); }
+};
+
+// |value - exact| <= 10^-(digits-1) |exact|: a correctly rounded `digits`-digit string is within
+// 5 * 10^-digits relative.
+void expect_close(const std::string& value, const Num& exact, int digits) {
+  Num parsed(digits), diff(digits), bound(digits);
+  ASSERT_EQ(mpfr_set_str(parsed.v, value.c_str(), 10, MPFR_RNDN), 0) << value;
+  mpfr_sub(diff.v, parsed.v, exact.v, MPFR_RNDN);
+  mpfr_set_si(bound.v, -(digits - 1), MPFR_RNDN);
+  mpfr_exp10(bound.v, bound.v, MPFR_RNDN);
+  mpfr_mul(bound.v, bound.v, exact.v, MPFR_RNDN);
+  EXPECT_LE(mpfr_cmpabs(diff.v, bound.v), 0)
+      << value << " differs from the closed form by " << mpfr_get_d(diff.v, MPFR_RNDN);
+}
+
+// The closed form of a number in (0.1, 1) as a `digits`-significant-digit string "0.ddd...".
+std::string decimal(const Num& v, int digits) {
+  mpfr_exp_t e = 0;
+  char* raw = mpfr_get_str(nullptr, &e, 10, static_cast<std::size_t>(digits), v.v, MPFR_RNDN);
+  std::string s = raw;
+  mpfr_free_str(raw);
+  EXPECT_EQ(e, 0);
+  return "0." + s;
+}
+
+// CONSTRUCTIONS.md "closed forms": d(t22a) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
+void t22a_closed_form(Num& d, int digits) {
+  Num s3(digits), s11(digits), den(digits);
+  mpfr_sqrt_ui(s3.v, 3, MPFR_RNDN);
+  mpfr_sqrt_ui(s11.v, 11, MPFR_RNDN);
+  mpfr_mul_ui(den.v, s3.v, 20, MPFR_RNDN);
+  mpfr_add_ui(den.v, den.v, 7, MPFR_RNDN);
+  mpfr_mul_2ui(s11.v, s11.v, 1, MPFR_RNDN);
+  mpfr_add(den.v, den.v, s11.v, MPFR_RNDN);
+  mpfr_mul_ui(d.v, s3.v, 5, MPFR_RNDN);
+  mpfr_div(d.v, d.v, den.v, MPFR_RNDN);
+}
+
+TEST(Multiprecision, EvenRippleT22aTo50Digits) {
+  const Pattern pat = build_chain_family({3, 1, 1});
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 50);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_EQ(mp.digits, 50);
+  EXPECT_LT(mp.log10_max_residual, -53);
+  Num exact(50);
+  t22a_closed_form(exact, 50);
+  EXPECT_EQ(mp.d, decimal(exact, 50));  // every one of the 50 digits
+  expect_close(mp.d, exact, 50);
+  ASSERT_EQ(mp.points.size(), 22u);
+  EXPECT_EQ(mp.points[0][0].size(), 52u);  // "0." and 50 decimals
+}
+
+TEST(Multiprecision, EvenRippleT22aTo30Digits) {
+  const Pattern pat = build_chain_family({3, 1, 1});
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 30);
+  ASSERT_TRUE(mp.converged);
+  Num exact(30);
+  t22a_closed_form(exact, 30);
+  EXPECT_EQ(mp.d, decimal(exact, 30));
+  EXPECT_EQ(mp.d.size(), 32u);
+  // L = 1/d: 5.574..., 30 significant digits.
+  EXPECT_EQ(mp.L.substr(0, 5), "5.574");
+  EXPECT_EQ(mp.L.size(), 31u);
+}
+
+TEST(Multiprecision, FourDeltaTo100Digits) {
+  // GL1995 Sec.5: d(4Delta(k)) = 1/(2k - 2 + sqrt3).
+  for (long k = 1; k <= 10; ++k) {
+    const Pattern pat = build_four_delta(k);
+    const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 100);
+    ASSERT_TRUE(mp.converged) << "k = " << k;
+    Num exact(100);
+    mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
+    mpfr_add_si(exact.v, exact.v, 2 * k - 2, MPFR_RNDN);
+    mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+    expect_close(mp.d, exact, 100);
+  }
+}
+
+TEST(Multiprecision, FourDeltaTo300Digits) {
+  // GL1995 Sec.5: d(4Delta(3)) = 1/(4 + sqrt3). The residuals (~1e-300) are rescaled before they
+  // meet the double factorization, which would otherwise underflow.
+  const Pattern pat = build_four_delta(3);
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 300);
+  ASSERT_TRUE(mp.converged);
+  Num exact(300);
+  mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
+  mpfr_add_ui(exact.v, exact.v, 4, MPFR_RNDN);
+  mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+  expect_close(mp.d, exact, 300);
+}
+
+TEST(Multiprecision, D79MatchesThePaper) {
+  // GL1995 Sec.5: d(79) = 0.0871159038791759 (even ripple k = 6). The paper rounds to 15
+  // significant digits (the 16th is 5 and the expansion continues ...791758550...), so the
+  // 50-digit string is compared after rounding to the paper's 15 digits.
+  const Pattern pat = build_chain_family({6, 1, 1});
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 50);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_EQ(mp.d.size(), 53u);  // "0.0" and 50 significant digits
+  Num d(50);
+  ASSERT_EQ(mpfr_set_str(d.v, mp.d.c_str(), 10, MPFR_RNDN), 0);
+  mpfr_mul_ui(d.v, d.v, 10, MPFR_RNDN);  // into (0.1, 1) for decimal()
+  EXPECT_EQ(decimal(d, 15), "0.871159038791759");
+}
+
+TEST(Multiprecision, RejectsDigitsOutOfRange) {
+  const Pattern pat = build_four_delta(2);
+  EXPECT_THROW(polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 0),
+               std::invalid_argument);
+  EXPECT_THROW(polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 1001),
+               std::invalid_argument);
+}
+
+TEST(Multiprecision, InconsistentSystemDoesNotConverge) {
+  // Three mutually touching disks cannot all sit on the floor.
+  Packing p;
+  p.points = {{0.3, 0.0}, {0.5, 0.0}, {0.4, 0.17}};
+  p.d = 0.2;
+  std::vector<Bond> bonds{Bond::pair(0, 1), Bond::pair(0, 2), Bond::pair(1, 2)};
+  for (int i = 0; i < 3; ++i) bonds.push_back(Bond::wall(i, Side::Bottom));
+  const auto mp = polish_multiprecision(p, bonds, {}, 30);
+  EXPECT_FALSE(mp.converged);
+  EXPECT_GT(mp.log10_max_residual, -5);
+  EXPECT_TRUE(mp.d.empty());
+  EXPECT_TRUE(mp.points.empty());
+}
+
+TEST(Multiprecision, InconsistencyBelowLongDoubleToleranceIsCaught) {
+  // Disk 2 is held fixed (declared a rattler, yet bonded) 1e-15 disk units beyond where the chain
+  // 0-1-2 along the floor from the corner can reach: the long double polish accepts that as its
+  // rounding floor, the MPFR Newton cannot go below it and says so.
+  Packing p;
+  p.points = {{0.0, 0.0}, {0.25, 0.0}, {0.5L + 2.5e-16L, 0.0}};
+  p.d = 0.25;
+  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::pair(1, 2), Bond::wall(0, Side::Bottom),
+                                Bond::wall(0, Side::Left), Bond::wall(1, Side::Bottom)};
+  const auto mp = polish_multiprecision(p, bonds, {2}, 30);
+  EXPECT_FALSE(mp.converged);
+  EXPECT_GT(mp.log10_max_residual, -17);
+  EXPECT_LT(mp.log10_max_residual, -15);
+  EXPECT_TRUE(mp.d.empty());
+}
+
+TEST(Multiprecision, RankDeficientConsistentSystemsConverge) {
+  // A floor pair plus a disk with no bonds (not declared a rattler): its column is empty, the
+  // least-squares steps leave it alone, and the bonded pair is polished.
+  Packing p;
+  p.points = {{0.2, 0.0}, {0.5001, 0.0002}, {0.5, 0.4}};
+  p.d = 0.3;
+  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
+                                Bond::wall(1, Side::Bottom)};
+  const auto mp = polish_multiprecision(p, bonds, {}, 40);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_LT(mp.log10_max_residual, -43);
+  // The pair lies on the floor at distance d: y to 40 decimals is zero.
+  EXPECT_EQ(mp.points[1][1], "0." + std::string(40, '0'));
+}
+
+TEST(Multiprecision, RattlersKeepTheirStartCoordinates) {
+  const Pattern pat = build_chain_family({3, 1, 1});
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 30);
+  ASSERT_TRUE(mp.converged);
+  for (int r : pat.rattlers) {
+    const auto i = static_cast<std::size_t>(r);
+    EXPECT_NEAR(std::stold(mp.points[i][0]), pat.packing.points[i].x, 1e-30L);
+    EXPECT_NEAR(std::stold(mp.points[i][1]), pat.packing.points[i].y, 1e-30L);
+  }
+}
+
+TEST(Multiprecision, EvenRippleN254To50Digits) {
+  // t254a (even ripple p = 11): the size the design targets (target under 5 s; ~10 ms measured).
+  const Pattern pat = build_chain_family({11, 1, 1});
+  ASSERT_EQ(pat.packing.size(), 254u);
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 50);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_LT(mp.iterations, 10);
+}
+
+}  // namespace
+}  // namespace tripack
