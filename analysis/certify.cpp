@@ -173,9 +173,10 @@ StressReport stress_certificate(const Packing& pk, const std::vector<Bond>& bond
   }
   for (std::size_t i = 0; i < pk.size(); ++i)
     if (col[i] >= 0) rep.residual = std::max(rep.residual, norm(net[i]));
-  // Forces are normalised to sum 1 over ~n pairs, so a real stress has forces ~1/n; 1e-9 is
-  // far below that and far above the LP's round-off.
-  rep.strictly_positive = rep.min_force > 1e-9L;
+  // Strictly positive only if the smallest force stands well clear of the solution's own error
+  // (its force imbalance): near-degenerate packings (sparse-rows, pairs at k >= 9) have forces
+  // below 1e-10 that a double LP cannot resolve, and they are reported as not certified.
+  rep.strictly_positive = rep.min_force > 1e-12L && rep.min_force > 100 * rep.residual;
   return rep;
 }
 

@@ -33,7 +33,7 @@ RigidityReport test_rigidity(const Packing& packing, const std::vector<Bond>& bo
 
 struct StressReport {
   bool exists = false;             // some non-negative balancing stress exists
-  bool strictly_positive = false;  // one with every bond force > 0
+  bool strictly_positive = false;  // every bond force > 100 x the balance residual (resolved)
   long double min_force = 0;       // smallest force of the max-min stress (pairs and walls)
   long double min_pair_force = 0, min_wall_force = 0;
   long double residual = 0;         // largest force imbalance on a disk, recomputed in long double

@@ -58,6 +58,10 @@ LinearProgram::Solution LinearProgram::solve(bool maximize) const {
                     row_hi.data());
   model.setOptimizationDirection(maximize ? -1 : 1);
   model.setMaximumIterations(std::max(20000, 100 * (rows() + columns())));
+  // Tighter than CLP's 1e-7 defaults: contact forces in near-degenerate packings (sparse-rows,
+  // pairs at k = 8) are ~1e-8 and must be resolved.
+  model.setPrimalTolerance(1e-10);
+  model.setDualTolerance(1e-10);
   // These LPs are highly degenerate (many contacts active at once); CLP's dual simplex handles
   // them, with the primal simplex as a second opinion.
   model.dual();

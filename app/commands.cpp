@@ -1,6 +1,7 @@
 #include "app/commands.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cmath>
@@ -8,7 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "analysis/exact_check.hpp"
 #include "analysis/polish.hpp"
+#include "analysis/polish_mp.hpp"
+#include "app/pipeline.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/conventions.hpp"
@@ -27,21 +31,35 @@ Catalogue load_catalogue(const GlobalOptions& g) {
   return Catalogue::load(g.catalogue.empty() ? Catalogue::default_path() : g.catalogue);
 }
 
-// One pass of the pipeline as far as this release goes: construct, then polish.
+// The whole pipeline on a class member: construct, polish the builder's bond system, verify
+// closed forms exactly, then certify from the geometry alone (relax, bonds, rattlers, rigidity,
+// stress) and compare with what the builder intended.
 struct Built {
-  Pattern pattern;
+  Pattern pattern;  // as constructed, polished with the builder's bonds
   PolishReport polish;
   bool polished = false;
-  double t_construct = 0, t_polish = 0;
+  std::optional<ExactCheckReport> exact;
+  std::optional<Analysis> analysis;
+  std::optional<MultiprecisionPolish> multiprecision;  // of the builder's bond system
+  StageTimes times;
+  double t_polish = 0;
   std::optional<long long> bonds_expected, rattlers_expected;
+  bool certify_skipped = false;
+  bool bonds_match() const { return analysis && analysis->pattern.bonds == pattern.bonds; }
+  bool rattlers_match() const { return analysis && analysis->pattern.rattlers == pattern.rattlers; }
+  std::string d_string(int digits) const {
+    if (multiprecision && multiprecision->converged) return multiprecision->d;
+    if (analysis && digits > 18) return analysis->d_string(digits);
+    return format_significant(pattern.packing.d, std::min(digits, 18));
+  }
 };
 
-Built run_build(const Catalogue& cat, const BuildRequest& req, bool polish) {
+Built run_build(const Catalogue& cat, const BuildRequest& req, const BuildOptions& o) {
   Built b;
   auto t0 = Clock::now();
   b.pattern = build_pattern(cat, req);
-  b.t_construct = seconds_since(t0);
-  if (polish) {
+  b.times.construct = seconds_since(t0);
+  if (o.polish) {
     t0 = Clock::now();
     b.polish = polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
     b.t_polish = seconds_since(t0);
@@ -50,6 +68,21 @@ Built run_build(const Catalogue& cat, const BuildRequest& req, bool polish) {
       throw std::runtime_error(
           fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
                       static_cast<double>(b.polish.max_residual), b.polish.iterations));
+  }
+  if (b.pattern.exact) {
+    t0 = Clock::now();
+    b.exact = exact_check(b.pattern);
+    b.times.exact = seconds_since(t0);
+  }
+  const bool certify = o.certify && o.polish && b.pattern.packing.size() <= kCertifyLimit;
+  b.certify_skipped = o.certify && !certify;
+  if (certify) {
+    b.analysis = analyze_packing(b.pattern.packing, {o.digits});
+  } else if (o.digits > 18) {
+    t0 = Clock::now();
+    b.multiprecision =
+        polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers, o.digits);
+    b.times.multiprecision = seconds_since(t0);
   }
   const auto& c = cat.find(b.pattern.provenance.class_id);
   const auto& pv = b.pattern.provenance;
@@ -71,14 +104,61 @@ std::string count_vs(std::size_t got, const std::optional<long long>& expected) 
                      static_cast<long long>(got) == *expected ? "" : ", MISMATCH");
 }
 
+void print_analysis(const Analysis& a, int digits, bool show_stage_times) {
+  const auto& pk = a.pattern.packing;
+  std::cout << fmt::format(
+      "{:<10} relax: {} LP steps, {}; polish residual {:.2g}, {} candidates, {} rejected\n",
+      "analysis", a.relax.iterations,
+      a.relax.converged ? "stationary" : "stopped at the trust floor",
+      static_cast<double>(a.identification.polish.max_residual), a.identification.candidates,
+      a.identification.rejected);
+  std::cout << fmt::format(
+      "{:<10} {}\n", "rigidity",
+      a.rigidity.rigid
+          ? "jammed (no first-order motion of the non-rattlers)"
+          : fmt::format("NOT rigid: motion of {} disks opens {} bonds (LP {:.3g}, {:.3g})",
+                        a.rigidity.moving_disks, a.rigidity.opening_bonds, a.rigidity.opening,
+                        a.rigidity.floppy));
+  if (a.stress.exists)
+    std::cout << fmt::format(
+        "{:<10} min force {:.6Lg} (pairs {:.6Lg}, walls {:.6Lg}), balance residual {:.2Lg}\n",
+        "stress", a.stress.min_force, a.stress.min_pair_force,
+        std::isfinite(a.stress.min_wall_force) ? a.stress.min_wall_force : 0.0L, a.stress.residual);
+  else
+    std::cout << fmt::format("{:<10} none\n", "stress");
+  std::cout << fmt::format("{:<10} {}\n", "verdict", a.status());
+  std::string gaps;
+  for (const auto& g : a.gaps) {
+    const std::string where = g.contact.is_wall()
+                                  ? fmt::format("{}-{}", g.contact.a, side_name(g.contact.side()))
+                                  : fmt::format("{}-{}", g.contact.a, g.contact.b);
+    gaps += fmt::format("{}{} {:.6Lg}{}", gaps.empty() ? "" : ", ", where, g.gap,
+                        g.rattler ? " (rattler)" : "");
+  }
+  std::cout << fmt::format("{:<10} {}\n", "gaps/d", gaps.empty() ? "-" : gaps);
+  if (a.multiprecision)
+    std::cout << fmt::format("{:<10} {} digits: {} MPFR iterations, log10 residual {:.1f}{}\n",
+                             "mpfr", a.multiprecision->digits, a.multiprecision->iterations,
+                             a.multiprecision->log10_max_residual,
+                             a.multiprecision->converged ? "" : " (NOT converged)");
+  if (show_stage_times)
+    std::cout << fmt::format(
+        "{:<10} relax {:.3f} ms, bonds+polish {:.3f} ms, rigidity {:.3f} ms, stress {:.3f} ms{}\n",
+        "time", a.times.relax * 1e3, a.times.bonds * 1e3, a.times.rigidity * 1e3,
+        a.times.stress * 1e3,
+        a.multiprecision ? fmt::format(", mpfr {:.3f} ms", a.times.multiprecision * 1e3) : "");
+  (void)pk;
+  (void)digits;
+}
+
 void print_build(const Built& b, int digits) {
   const auto& pk = b.pattern.packing;
   const long long n = static_cast<long long>(pk.size());
   const long double L = 1.0L / pk.d;
   std::cout << fmt::format("{:<10} {}\n", "class", member_name(b.pattern.provenance));
   std::cout << fmt::format("{:<10} {}\n", "n", n);
-  std::cout << fmt::format("{:<10} {}\n", "d", format_significant(pk.d, digits));
-  std::cout << fmt::format("{:<10} {}\n", "L", format_significant(L, digits));
+  std::cout << fmt::format("{:<10} {}\n", "d", b.d_string(digits));
+  std::cout << fmt::format("{:<10} {}\n", "L", format_significant(L, std::min(digits, 18)));
   std::cout << fmt::format("{:<10} {}\n", "delta(n)", format_significant(oler_delta(n, L), 15));
   std::cout << fmt::format("{:<10} {}\n", "bonds",
                            count_vs(b.pattern.bonds.size(), b.bonds_expected));
@@ -92,11 +172,51 @@ void print_build(const Built& b, int digits) {
         "{:<10} max residual {:.2g} (disk units), {} iterations, {} equations, rank {}\n", "polish",
         static_cast<double>(b.polish.max_residual), b.polish.iterations, b.polish.equations, rank);
   }
-  std::cout << fmt::format("{:<10} construct {:.3f} ms, polish {:.3f} ms\n", "time",
-                           b.t_construct * 1e3, b.t_polish * 1e3);
+  if (b.exact)
+    std::cout << fmt::format(
+        "{:<10} {} ({} bonds exactly at d, {} gaps exactly positive, in Q(sqrt3))\n", "exact",
+        b.exact->ok ? "verified" : "FAILED: " + b.exact->failure, b.exact->bonds_checked,
+        b.exact->gaps_checked);
+  if (b.analysis) {
+    std::cout << fmt::format("{:<10} bonds from geometry {} the builder's, rattlers {}\n",
+                             "certify", b.bonds_match() ? "equal" : "DIFFER from",
+                             b.rattlers_match() ? "equal" : "DIFFER");
+    print_analysis(*b.analysis, digits, false);
+  } else if (b.certify_skipped) {
+    std::cout << fmt::format(
+        "{:<10} skipped for n > {} (LP certification; use --no-certify to silence)\n", "certify",
+        kCertifyLimit);
+  }
+  if (b.multiprecision)
+    std::cout << fmt::format("{:<10} {} digits: {} MPFR iterations{}\n", "mpfr",
+                             b.multiprecision->digits, b.multiprecision->iterations,
+                             b.multiprecision->converged ? "" : " (NOT converged)");
+  const auto* a = b.analysis ? &*b.analysis : nullptr;
+  std::cout << fmt::format(
+      "{:<10} construct {:.3f} ms, polish {:.3f} ms{}{}{}\n", "time", b.times.construct * 1e3,
+      b.t_polish * 1e3, b.exact ? fmt::format(", exact {:.3f} ms", b.times.exact * 1e3) : "",
+      a ? fmt::format(", relax {:.3f} ms, bonds {:.3f} ms, certify {:.3f} ms", a->times.relax * 1e3,
+                      a->times.bonds * 1e3, (a->times.rigidity + a->times.stress) * 1e3)
+        : "",
+      a && a->multiprecision ? fmt::format(", mpfr {:.3f} ms", a->times.multiprecision * 1e3)
+      : b.multiprecision     ? fmt::format(", mpfr {:.3f} ms", b.times.multiprecision * 1e3)
+                             : "");
 }
 
-nlohmann::json build_json(const Built& b) {
+nlohmann::json certificate_json(const Analysis& a) {
+  return {{"rigid", a.rigidity.rigid},
+          {"stress_exists", a.stress.exists},
+          {"stress_strictly_positive", a.stress.strictly_positive},
+          {"min_force", static_cast<double>(a.stress.min_force)},
+          {"balance_residual", static_cast<double>(a.stress.residual)},
+          {"certified", a.certified()},
+          {"verdict", a.status()},
+          {"bonds", a.pattern.bonds.size()},
+          {"rattlers", a.pattern.rattlers},
+          {"relax_iterations", a.relax.iterations}};
+}
+
+nlohmann::json build_json(const Built& b, int digits) {
   const auto& pk = b.pattern.packing;
   const auto& pv = b.pattern.provenance;
   const long long n = static_cast<long long>(pk.size());
@@ -107,13 +227,27 @@ nlohmann::json build_json(const Built& b) {
   j["p"] = pv.p ? nlohmann::json(pv.p) : nlohmann::json(nullptr);
   j["variant"] = pv.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(pv.variant);
   j["n"] = n;
-  j["d"] = format_significant(pk.d, 17);
+  j["d"] = digits > 18 ? b.d_string(digits) : format_significant(pk.d, 17);
   j["L"] = format_significant(L, 17);
   j["delta"] = static_cast<double>(oler_delta(n, L));
   j["bonds"] = b.pattern.bonds.size();
   j["rattlers"] = b.pattern.rattlers.size();
-  j["seconds"] = b.t_construct + b.t_polish;
-  j["stage_seconds"] = {{"construct", b.t_construct}, {"polish", b.t_polish}};
+  const auto* a = b.analysis ? &*b.analysis : nullptr;
+  j["seconds"] = b.times.construct + b.t_polish + b.times.exact + b.times.multiprecision +
+                 (a ? a->times.total() : 0.0);
+  j["stage_seconds"] = {
+      {"construct", b.times.construct}, {"polish", b.t_polish}, {"exact", b.times.exact}};
+  if (a) {
+    j["stage_seconds"]["relax"] = a->times.relax;
+    j["stage_seconds"]["bonds"] = a->times.bonds;
+    j["stage_seconds"]["rigidity"] = a->times.rigidity;
+    j["stage_seconds"]["stress"] = a->times.stress;
+    j["stage_seconds"]["multiprecision"] = a->times.multiprecision;
+    j["certificate"] = certificate_json(*a);
+    j["certificate"]["bonds_match_builder"] = b.bonds_match();
+    j["certificate"]["rattlers_match_builder"] = b.rattlers_match();
+  }
+  if (b.exact) j["exact_check"] = b.exact->ok;
   if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);
   return j;
 }
@@ -222,23 +356,28 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
       throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(o.n));
     bool have = false;
     for (const auto& m : members) {
-      Built b = run_build(cat, {m.cls->id, m.k, m.p, ""}, o.polish);
+      BuildOptions quick = o;
+      quick.certify = false;  // rank the candidates first, certify only the winner
+      quick.digits = 15;
+      Built b = run_build(cat, {m.cls->id, m.k, m.p, ""}, quick);
       if (!o.json)
         std::cerr << fmt::format("candidate {:<40} d = {}\n", member_name(b.pattern.provenance),
-                                 format_significant(b.pattern.packing.d, o.digits));
+                                 format_significant(b.pattern.packing.d, 15));
       if (!have || b.pattern.packing.d > best.pattern.packing.d) {
         best = std::move(b);
         have = true;
       }
     }
+    const Provenance win = best.pattern.provenance;
+    best = run_build(cat, {win.class_id, win.k, win.p, win.variant}, o);
   } else {
     if (o.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
     if (o.k == kUnsetK) throw std::invalid_argument("build needs --k K");
-    best = run_build(cat, {o.class_id, o.k, o.p, o.variant}, o.polish);
+    best = run_build(cat, {o.class_id, o.k, o.p, o.variant}, o);
   }
   if (!o.output.empty()) write_pattern(o.output, best.pattern);
   if (o.json)
-    std::cout << build_json(best).dump() << "\n";
+    std::cout << build_json(best, o.digits).dump() << "\n";
   else
     print_build(best, o.digits);
   return 0;
@@ -260,7 +399,9 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
     std::vector<std::string> variants = cat.variants_at(c, k);
     if (variants.empty()) variants.push_back("");
     for (const auto& v : variants) {
-      const Built b = run_build(cat, {c.id, k, o.p, v}, true);
+      BuildOptions bo;
+      bo.certify = false;
+      const Built b = run_build(cat, {c.id, k, o.p, v}, bo);
       const Expression* exact = cat.exact_L_of(c, k, o.p);
       std::optional<long double> L;
       std::string source;
@@ -291,12 +432,12 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
         if (!v.empty()) j["variant"] = v;
         std::cout << j.dump() << "\n";
       } else {
-        std::cout << fmt::format("{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}{}\n", k,
-                                 b.pattern.packing.size(), v, format_significant(d, 17),
-                                 L ? format_significant(1 / *L, 17) : "-",
-                                 L ? fmt::format("{:.2e}", static_cast<double>(rel)) : "-",
-                                 count_vs(b.pattern.bonds.size(), b.bonds_expected),
-                                 L ? source : "no formula for L in the catalogue", ok ? "" : "  FAIL");
+        std::cout << fmt::format(
+            "{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}{}\n", k, b.pattern.packing.size(), v,
+            format_significant(d, 17), L ? format_significant(1 / *L, 17) : "-",
+            L ? fmt::format("{:.2e}", static_cast<double>(rel)) : "-",
+            count_vs(b.pattern.bonds.size(), b.bonds_expected),
+            L ? source : "no formula for L in the catalogue", ok ? "" : "  FAIL");
       }
     }
   }
@@ -310,8 +451,8 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
 int cmd_table(const GlobalOptions& g, long k_max) {
   const Catalogue cat = load_catalogue(g);
   std::cout << fmt::format(
-      "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10} {:>6} {:>4} {:>9} {:>8}\n", "class", "p",
-      "k", "variant", "n", "d", "L", "delta", "bonds", "ratt", "residual", "ms");
+      "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>9} {:>5} {:>4} {:>6} {:>9} {:>8}\n", "class",
+      "p", "k", "variant", "n", "d", "L", "delta", "bonds", "ratt", "match", "certified", "ms");
   bool all_ok = true;
   for (const auto& c : cat.classes()) {
     const long p_count = c.has_p ? 3 : 1;
@@ -322,26 +463,79 @@ int cmd_table(const GlobalOptions& g, long k_max) {
         if (variants.empty()) variants.push_back("");
         for (const auto& v : variants) {
           const auto t0 = Clock::now();
-          const Built b = run_build(cat, {c.id, k, p, v}, true);
+          const Built b = run_build(cat, {c.id, k, p, v}, BuildOptions{});
           const double ms = seconds_since(t0) * 1e3;
           const auto& pk = b.pattern.packing;
           const long long n = static_cast<long long>(pk.size());
-          const bool ok = !b.bonds_expected ||
-                          static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+          const bool counts_ok =
+              !b.bonds_expected ||
+              static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
+          const bool match = b.bonds_match() && b.rattlers_match();
+          const bool ok =
+              counts_ok && match && b.analysis->certified() && (!b.exact || b.exact->ok);
           all_ok = all_ok && ok;
           std::cout << fmt::format(
-              "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>10.6f} {:>6} {:>4} {:>9.1e} "
+              "{:<20} {:>3} {:>3} {:<9} {:>5} {:>19} {:>18} {:>9.6f} {:>5} {:>4} {:>6} {:>9} "
               "{:>8.2f}{}\n",
               c.id, p ? std::to_string(p) : "", k, v, n, format_significant(pk.d, 15),
               format_significant(1 / pk.d, 15), static_cast<double>(oler_delta(n, 1 / pk.d)),
-              b.pattern.bonds.size(), b.pattern.rattlers.size(),
-              static_cast<double>(b.polish.max_residual), ms,
-              ok ? "" : "  bond count differs from the catalogue");
+              b.pattern.bonds.size(), b.pattern.rattlers.size(), match ? "yes" : "NO",
+              b.analysis->certified() ? (b.exact ? "yes+exact" : "yes") : "NO", ms,
+              counts_ok ? "" : "  bond count differs from the catalogue");
         }
       }
     }
   }
+  std::cout
+      << "match: bonds and rattlers found from the geometry alone equal the builder's; certified: "
+         "rigid "
+         "(LP) with a strictly positive stress; exact: every bond and gap verified in Q(sqrt3).\n";
   return all_ok ? 0 : 1;
+}
+
+int cmd_analyze(const AnalyzeOptions& o) {
+  const auto convention = parse_convention(o.convention);
+  if (!convention)
+    throw std::invalid_argument("unknown convention '" + o.convention +
+                                "' (unit-triangle, radius, unit-disk-side)");
+  Packing start = packing_from_points(read_points_file(o.file), *convention,
+                                      o.n ? std::optional<long long>(o.n) : std::nullopt);
+  const Analysis a = analyze_packing(start, {o.digits});
+  const auto& pk = a.pattern.packing;
+  const long long n = static_cast<long long>(pk.size());
+  const long double L = 1 / pk.d;
+  if (o.json) {
+    nlohmann::json j = certificate_json(a);
+    j["n"] = n;
+    j["d"] = a.d_string(o.digits > 18 ? o.digits : 17);
+    j["L"] = format_significant(L, 17);
+    j["delta"] = static_cast<double>(oler_delta(n, L));
+    j["convention"] = o.convention;
+    j["value_in_convention"] = format_significant(from_d(pk.d, *convention), 17);
+    j["d_start"] = format_significant(a.relax.d_start, 17);
+    j["stage_seconds"] = {{"relax", a.times.relax},
+                          {"bonds", a.times.bonds},
+                          {"rigidity", a.times.rigidity},
+                          {"stress", a.times.stress},
+                          {"multiprecision", a.times.multiprecision}};
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::cout << fmt::format("{:<10} {}\n", "file", o.file);
+  std::cout << fmt::format("{:<10} {}\n", "n", n);
+  std::cout << fmt::format("{:<10} {} (start {})\n", "d", a.d_string(o.digits),
+                           format_significant(a.relax.d_start, 15));
+  if (*convention != Convention::UnitTriangle)
+    std::cout << fmt::format("{:<10} {}\n", o.convention == "radius" ? "r" : "S",
+                             format_significant(from_d(pk.d, *convention), std::min(o.digits, 18)));
+  std::cout << fmt::format("{:<10} {}\n", "L", format_significant(L, std::min(o.digits, 18)));
+  std::cout << fmt::format("{:<10} {}\n", "delta(n)", format_significant(oler_delta(n, L), 15));
+  std::cout << fmt::format("{:<10} {}\n", "bonds", a.pattern.bonds.size());
+  std::cout << fmt::format("{:<10} {}{}{}\n", "rattlers", a.pattern.rattlers.size(),
+                           a.pattern.rattlers.empty() ? "" : " : ",
+                           fmt::join(a.pattern.rattlers, " "));
+  print_analysis(a, o.digits, true);
+  return 0;
 }
 
 }  // namespace tripack::app

@@ -22,6 +22,18 @@ struct BuildOptions {
   std::string output;  // -o FILE
   bool json = false;
   bool polish = true;
+  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
+};
+
+// Above this many disks `build` skips the LP-based certification unless asked explicitly.
+inline constexpr std::size_t kCertifyLimit = 20000;
+
+struct AnalyzeOptions {
+  std::string file;
+  std::string convention = "unit-triangle";
+  int digits = 15;
+  long long n = 0;  // expected number of points (0: any)
+  bool json = false;
 };
 
 struct CheckFormulaOptions {
@@ -36,5 +48,6 @@ int cmd_classify(const GlobalOptions& g, long long n, bool json);
 int cmd_build(const GlobalOptions& g, const BuildOptions& o);
 int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o);
 int cmd_table(const GlobalOptions& g, long k_max);
+int cmd_analyze(const AnalyzeOptions& o);
 
 }  // namespace tripack::app

@@ -31,11 +31,12 @@ int main(int argc, char** argv) {
   build->add_option("--p", b.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   build->add_option("--n", b.n, "number of disks: build the catalogue's best class containing n");
   build->add_option("--variant", b.variant, "variant (e.g. rattler, cavity-1, full)");
-  build->add_option("--digits", b.digits, "significant digits of d to print")
-      ->check(CLI::Range(1, 18));
+  build->add_option("--digits", b.digits, "significant digits of d (above 18: MPFR polish)")
+      ->check(CLI::Range(1, 1000));
   build->add_option("-o,--output", b.output, "write coordinates (.txt, .csv or .json)");
   build->add_flag("--json", b.json, "print one JSON object");
   build->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
+  build->add_flag("!--no-certify", b.certify, "skip relax/bonds/rigidity/stress from the geometry");
 
   CheckFormulaOptions cf;
   auto* check =
@@ -44,6 +45,19 @@ int main(int argc, char** argv) {
   check->add_option("--k", cf.k_range, "k or a range A..B")->required();
   check->add_option("--p", cf.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   check->add_flag("--json", cf.json, "JSON lines output");
+
+  AnalyzeOptions an;
+  auto* analyze = cli.add_subcommand(
+      "analyze", "Relax, find bonds and rattlers, test rigidity, certify a file of points");
+  analyze->add_option("file", an.file, "points: .txt (x y lines), .csv or .json")->required();
+  analyze->add_option("--convention", an.convention,
+                      "unit-triangle (centres in the side-1 triangle), radius or unit-disk-side "
+                      "(circles in a container)");
+  analyze->add_option("--digits", an.digits, "significant digits of d (above 18: MPFR polish)")
+      ->check(CLI::Range(1, 1000));
+  analyze->add_option("--n", an.n, "expected number of points")
+      ->check(CLI::Range(1LL, 100000000LL));
+  analyze->add_flag("--json", an.json, "print one JSON object");
 
   long table_kmax = 4;
   auto* table = cli.add_subcommand("table", "Build and polish the first terms of every class");
@@ -65,6 +79,7 @@ int main(int argc, char** argv) {
     if (*build) return cmd_build(g, b);
     if (*check) return cmd_check_formula(g, cf);
     if (*table) return cmd_table(g, table_kmax);
+    if (*analyze) return cmd_analyze(an);
   } catch (const std::exception& e) {
     std::cerr << "tripack: error: " << e.what() << "\n";
     return 1;

@@ -1,0 +1,56 @@
+// The analysis pipeline (SPEC §2): relax -> bonds (+ polish) -> rattlers -> rigidity -> stress
+// -> optional multiprecision, with the time of each stage. app/ is the one place that wires the
+// stages together; `build` and `analyze` both use it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/bonds.hpp"
+#include "analysis/certify.hpp"
+#include "analysis/polish_mp.hpp"
+#include "analysis/relax.hpp"
+#include "core/conventions.hpp"
+#include "core/packing.hpp"
+
+namespace tripack::app {
+
+struct StageTimes {
+  double construct = 0, relax = 0, bonds = 0, rigidity = 0, stress = 0, multiprecision = 0,
+         exact = 0;
+  double total() const {
+    return construct + relax + bonds + rigidity + stress + multiprecision + exact;
+  }
+};
+
+struct AnalysisOptions {
+  int digits = 15;  // > 18: polish in MPFR to this many digits
+};
+
+struct Analysis {
+  Pattern pattern;  // the polished packing with the identified bonds and rattlers
+  RelaxReport relax;
+  BondIdentification identification;
+  RigidityReport rigidity;
+  StressReport stress;
+  std::optional<MultiprecisionPolish> multiprecision;
+  std::vector<Gap> gaps;  // smallest non-bond gaps
+  StageTimes times;
+  bool certified() const {
+    return rigidity.rigid && stress.strictly_positive && identification.polish.converged;
+  }
+  std::string status() const;  // one line: the certificate's verdict
+  // d with `digits` significant digits (from MPFR when it ran).
+  std::string d_string(int digits) const;
+};
+
+Analysis analyze_packing(const Packing& start, const AnalysisOptions& options);
+
+// Points read from a file, in convention `c`, to a packing in the unit triangle. Throws
+// InputError (one line) for fewer than two points, a count other than `expected_n`, points
+// outside the unit triangle (unit-triangle convention), or coinciding points.
+Packing packing_from_points(std::vector<Vec2L> points, Convention c,
+                            std::optional<long long> expected_n);
+
+}  // namespace tripack::app
