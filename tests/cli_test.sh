@@ -77,5 +77,32 @@ if [ "$(grep -vc '^#' "$tmp/t22a.txt")" -eq 22 ]; then pass=$((pass + 1)); else 
 if grep -q '"points"' "$tmp/t22a.json"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: -o json"; fi
 rm -rf "$tmp"
 
+# analyze: bad input gets one line and a non-zero exit.
+tmp=$(mktemp -d)
+printf '0.1 0.1\n0.5 nan\n' >"$tmp/nan.txt"
+printf '0.1 0.1\n0.9 0.9\n' >"$tmp/outside.txt"
+printf '0.1 0.1\n0.1 0.1\n0.5 0.2\n' >"$tmp/duplicate.txt"
+printf '0.1 0.1\n0.5 0.2 0.3\n' >"$tmp/malformed.txt"
+printf '{"points": [[0.1, 0.1], [0.2]]}' >"$tmp/malformed.json"
+expect_error "analyze: unreadable file" "cannot read" analyze "$tmp/missing.txt"
+expect_error "analyze: NaN" "not a finite number" analyze "$tmp/nan.txt"
+expect_error "analyze: outside" "outside the unit triangle" analyze "$tmp/outside.txt"
+expect_error "analyze: duplicate points" "coincide" analyze "$tmp/duplicate.txt"
+expect_error "analyze: malformed text" "line 2" analyze "$tmp/malformed.txt"
+expect_error "analyze: malformed json" "point 1" analyze "$tmp/malformed.json"
+expect_error "analyze: wrong point count" "expected 23 points" analyze "$tmp/duplicate.txt" --n 23
+expect_error "analyze: unknown convention" "unknown convention" analyze "$tmp/nan.txt" --convention diameter
+expect_error "digits out of range" "digits" build four-delta --k 2 --digits 5000
+
+# analyze of a written packing certifies it and finds its 2 rattlers (GL1995 Fig.t22).
+"$TRIPACK" build even-ripple --k 3 -o "$tmp/t22a.csv" >/dev/null
+expect_output "analyze t22a" "certified: rigid with a strictly positive stress" analyze "$tmp/t22a.csv"
+expect_output "analyze t22a rattlers" '"rattlers":[' analyze "$tmp/t22a.csv" --json
+rm -rf "$tmp"
+
+# CONSTRUCTIONS: d(22) = 5 sqrt3/(20 sqrt3 + 7 + 2 sqrt11) = 0.17939690861186597956121884705073659574141764618876
+# to 50 digits (mpmath); build --n 22 --digits 50 prints all of them.
+expect_output "build --n 22 --digits 50" "0.17939690861186597956121884705073659574141764618876" build --n 22 --digits 50
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

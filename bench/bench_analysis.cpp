@@ -1,0 +1,111 @@
+// Time of every analysis stage against n (issue: the whole certify pipeline for n = 254 under
+// 1 s; 50 digits for n = 254 under 5 s). Patterns: Delta(2p)+1 for p = 3, 6, 11, 22
+// (n = 22, 79, 254, 991). Run: build/bench/bench_analysis
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "analysis/bonds.hpp"
+#include "analysis/certify.hpp"
+#include "analysis/polish.hpp"
+#include "analysis/polish_mp.hpp"
+#include "analysis/relax.hpp"
+#include "app/pipeline.hpp"
+#include "constructors/builders.hpp"
+
+namespace tripack {
+namespace {
+
+Pattern ripple(long p) {
+  return build_chain_family({p, 1, 1});
+}
+
+// Every coordinate moved by a relative `amplitude` of d, seeded: the start the stage sees.
+Packing noisy(const Packing& pk, long double amplitude) {
+  Packing out = pk;
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<long double> u(-amplitude, amplitude);
+  for (auto& x : out.points) x = {x.x + u(rng) * out.d, x.y + u(rng) * out.d};
+  return out;
+}
+
+void set_n(benchmark::State& s, std::size_t n) {
+  s.counters["n"] = static_cast<double>(n);
+}
+
+void BM_Relax(benchmark::State& s) {
+  const Pattern pat = ripple(s.range(0));
+  const Packing start = noisy(pat.packing, 1e-4L);
+  for (auto _ : s) {
+    Packing pk = start;
+    benchmark::DoNotOptimize(relax_packing(pk).iterations);
+  }
+  set_n(s, pat.packing.size());
+}
+
+void BM_Bonds(benchmark::State& s) {  // identification + rattlers + polish, from the relaxed state
+  const Pattern pat = ripple(s.range(0));
+  Packing relaxed = noisy(pat.packing, 1e-4L);
+  const RelaxReport r = relax_packing(relaxed);
+  for (auto _ : s) {
+    Packing pk = relaxed;
+    benchmark::DoNotOptimize(identify_bonds(pk, r.active).bonds.size());
+  }
+  set_n(s, pat.packing.size());
+}
+
+void BM_RigidityLP(benchmark::State& s) {
+  const Pattern pat = ripple(s.range(0));
+  for (auto _ : s)
+    benchmark::DoNotOptimize(test_rigidity(pat.packing, pat.bonds, pat.rattlers).rigid);
+  set_n(s, pat.packing.size());
+}
+
+void BM_StressLP(benchmark::State& s) {
+  const Pattern pat = ripple(s.range(0));
+  for (auto _ : s)
+    benchmark::DoNotOptimize(stress_certificate(pat.packing, pat.bonds, pat.rattlers).min_force);
+  set_n(s, pat.packing.size());
+}
+
+void BM_Polish15(benchmark::State& s) {  // long double polish from a 1e-12 start
+  const Pattern pat = ripple(s.range(0));
+  const Packing start = noisy(pat.packing, 1e-12L);
+  for (auto _ : s) {
+    Packing pk = start;
+    benchmark::DoNotOptimize(polish_bond_system(pk, pat.bonds, pat.rattlers).converged);
+  }
+  set_n(s, pat.packing.size());
+}
+
+void BM_Polish50(benchmark::State& s) {  // long double + MPFR to 50 digits, from a 1e-12 start
+  const Pattern pat = ripple(s.range(0));
+  const Packing start = noisy(pat.packing, 1e-12L);
+  for (auto _ : s)
+    benchmark::DoNotOptimize(polish_multiprecision(start, pat.bonds, pat.rattlers, 50).converged);
+  set_n(s, pat.packing.size());
+}
+
+void BM_CertifyPipeline(benchmark::State& s) {  // relax + bonds + polish + rigidity + stress
+  const Pattern pat = ripple(s.range(0));
+  const Packing start = noisy(pat.packing, 1e-4L);
+  for (auto _ : s) {
+    const app::Analysis a = app::analyze_packing(start, {});
+    if (!a.certified()) s.SkipWithError("not certified");
+  }
+  set_n(s, pat.packing.size());
+}
+
+#define TRIPACK_SIZES ->Arg(3)->Arg(6)->Arg(11)->Arg(22)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_Relax) TRIPACK_SIZES;
+BENCHMARK(BM_Bonds) TRIPACK_SIZES;
+BENCHMARK(BM_RigidityLP) TRIPACK_SIZES;
+BENCHMARK(BM_StressLP) TRIPACK_SIZES;
+BENCHMARK(BM_Polish15) TRIPACK_SIZES;
+BENCHMARK(BM_Polish50) TRIPACK_SIZES;
+BENCHMARK(BM_CertifyPipeline) TRIPACK_SIZES;
+
+}  // namespace
+}  // namespace tripack
+
+BENCHMARK_MAIN();
