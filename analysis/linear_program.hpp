@@ -23,7 +23,7 @@ class LinearProgram {
     Status status = Status::Failed;
     double objective = 0;
     std::vector<double> x;     // per column
-    std::vector<double> dual;  // per row (GLPK sign convention for the objective's direction)
+    std::vector<double> dual;  // per row (CLP sign convention; relax and tests use magnitudes)
     int solver_status = 0;     // CLP's status (0: optimal)
   };
   Solution solve(bool maximize) const;

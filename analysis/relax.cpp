@@ -46,8 +46,8 @@ RelaxReport relax_packing(Packing& pk, const RelaxOptions& opt) {
   for (int it = 0; it < opt.max_iterations; ++it) {
     ++rep.iterations;
     const long double box = trust * d;
-    // Variables are displacements in units of the box (and the gain likewise), so GLPK's fixed
-    // tolerances (~1e-7) are relative to the step: the accuracy improves as the box shrinks.
+    // Variables are displacements in units of the box (and the gain likewise), so the LP solver's
+    // fixed tolerances (~1e-7) are relative to the step: the accuracy improves as the box shrinks.
     const long double reach = 3 * box + 1e-9L * d;  // a pair can close by at most 2 sqrt2 box
     LinearProgram lp;
     for (std::size_t i = 0; i < n; ++i) {
