@@ -127,15 +127,23 @@ void print_analysis(const Analysis& a, int digits, bool show_stage_times) {
   else
     std::cout << fmt::format("{:<10} none\n", "stress");
   std::cout << fmt::format("{:<10} {}\n", "verdict", a.status());
+  // Near contacts (non-bonds between held disks) are what a referee checks; rattlers' play apart.
   std::string gaps;
+  int shown = 0;
+  const Gap* play = nullptr;
   for (const auto& g : a.gaps) {
+    if (g.rattler) {
+      if (!play) play = &g;
+      continue;
+    }
+    if (shown++ >= 5) continue;
     const std::string where = g.contact.is_wall()
                                   ? fmt::format("{}-{}", g.contact.a, side_name(g.contact.side()))
                                   : fmt::format("{}-{}", g.contact.a, g.contact.b);
-    gaps += fmt::format("{}{} {:.6Lg}{}", gaps.empty() ? "" : ", ", where, g.gap,
-                        g.rattler ? " (rattler)" : "");
+    gaps += fmt::format("{}{} {:.6Lg}", gaps.empty() ? "" : ", ", where, g.gap);
   }
-  std::cout << fmt::format("{:<10} {}\n", "gaps/d", gaps.empty() ? "-" : gaps);
+  std::cout << fmt::format("{:<10} {}\n", "near/d", gaps.empty() ? "-" : gaps);
+  if (play) std::cout << fmt::format("{:<10} smallest rattler gap {:.6Lg} d\n", "play", play->gap);
   if (a.multiprecision)
     std::cout << fmt::format("{:<10} {} digits: {} MPFR iterations, log10 residual {:.1f}{}\n",
                              "mpfr", a.multiprecision->digits, a.multiprecision->iterations,
@@ -501,6 +509,7 @@ int cmd_analyze(const AnalyzeOptions& o) {
   Packing start = packing_from_points(read_points_file(o.file), *convention,
                                       o.n ? std::optional<long long>(o.n) : std::nullopt);
   const Analysis a = analyze_packing(start, {o.digits});
+  if (!o.output.empty()) write_pattern(o.output, a.pattern);
   const auto& pk = a.pattern.packing;
   const long long n = static_cast<long long>(pk.size());
   const long double L = 1 / pk.d;

@@ -32,7 +32,8 @@ struct AnalyzeOptions {
   std::string file;
   std::string convention = "unit-triangle";
   int digits = 15;
-  long long n = 0;  // expected number of points (0: any)
+  long long n = 0;     // expected number of points (0: any)
+  std::string output;  // -o FILE: the certified packing (unit triangle)
   bool json = false;
 };
 

@@ -57,6 +57,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   analyze->add_option("--n", an.n, "expected number of points")
       ->check(CLI::Range(1LL, 100000000LL));
+  analyze->add_option("-o,--output", an.output,
+                      "write the certified packing (.txt, .csv or .json)");
   analyze->add_flag("--json", an.json, "print one JSON object");
 
   long table_kmax = 4;

@@ -53,11 +53,20 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, a.relax.active); });
   a.pattern.bonds = a.identification.bonds;
   a.pattern.rattlers = a.identification.rattlers;
+  // Relax leaves rattlers wherever its LPs pushed them (often against their cage): centre them.
+  if (!a.pattern.rattlers.empty()) {
+    const long double L = 1 / pk.d;
+    std::vector<Vec2L> x;
+    for (const auto& p : pk.points) x.push_back(p * L);
+    centre_rattlers(x, L, a.pattern.rattlers);
+    for (int r : a.pattern.rattlers)
+      pk.points[static_cast<std::size_t>(r)] = x[static_cast<std::size_t>(r)] / L;
+  }
   a.rigidity = timed(a.times.rigidity,
                      [&] { return test_rigidity(pk, a.pattern.bonds, a.pattern.rattlers); });
   a.stress = timed(a.times.stress,
                    [&] { return stress_certificate(pk, a.pattern.bonds, a.pattern.rattlers); });
-  a.gaps = smallest_gaps(pk, a.pattern.bonds, 5);
+  a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
   if (options.digits > 18)
     a.multiprecision = timed(a.times.multiprecision, [&] {
       return polish_multiprecision(pk, a.pattern.bonds, a.pattern.rattlers, options.digits);

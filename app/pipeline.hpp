@@ -35,7 +35,7 @@ struct Analysis {
   RigidityReport rigidity;
   StressReport stress;
   std::optional<MultiprecisionPolish> multiprecision;
-  std::vector<Gap> gaps;  // smallest non-bond gaps
+  std::vector<Gap> gaps;  // the 64 smallest non-bond gaps (near contacts and rattlers' play)
   StageTimes times;
   bool certified() const {
     return rigidity.rigid && stress.strictly_positive && identification.polish.converged;

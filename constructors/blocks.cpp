@@ -123,46 +123,7 @@ long DiskUnitsPattern::index_in_triangle(long k, long i, long j) {
   return i * k - i * (i - 1) / 2 + j;
 }
 
-namespace {
-
-// Clearance of a disk at p: distance to the nearest other centre minus 1, or to the nearest side.
-long double clearance(const Vec2L& p, const std::vector<Vec2L>& neighbours, long double L) {
-  long double c = std::numeric_limits<long double>::infinity();
-  for (const auto& q : neighbours) c = std::min(c, norm(p - q) - 1);
-  for (Side s : kSides) c = std::min(c, wall_distance(p, s, L));
-  return c;
-}
-
-// Compass search for the point of largest clearance near p: the cage's centre. Cheap (a few
-// hundred evaluations over a handful of neighbours) and robust to the non-smooth max-min.
-Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double L) {
-  long double best = clearance(p, neighbours, L);
-  long double h = 0.25L;
-  static const Vec2L dirs[8] = {{1, 0},
-                                {-1, 0},
-                                {0, 1},
-                                {0, -1},
-                                {0.7071067811865475L, 0.7071067811865475L},
-                                {-0.7071067811865475L, 0.7071067811865475L},
-                                {0.7071067811865475L, -0.7071067811865475L},
-                                {-0.7071067811865475L, -0.7071067811865475L}};
-  while (h > 1e-13L) {
-    bool moved = false;
-    for (const auto& d : dirs) {
-      const Vec2L t = p + d * h;
-      const long double c = clearance(t, neighbours, L);
-      if (c > best) {
-        best = c;
-        p = t;
-        moved = true;
-      }
-    }
-    if (!moved) h /= 2;
-  }
-  return p;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 Pattern DiskUnitsPattern::finish(Provenance provenance) {
   const std::size_t n = pts_.size();
@@ -170,22 +131,10 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
   std::vector<char> is_rattler(n, 0);
   for (int r : rattlers_) is_rattler[static_cast<std::size_t>(r)] = 1;
 
-  // Rattlers: gather neighbours within reach of each cage and centre the rattler in it.
+  // Rattlers: each to the centre of its cage; there must be room.
   if (!rattlers_.empty()) {
-    std::vector<std::vector<int>> near(n);
-    for_each_pair_within(pts_, 2.5L, [&](int i, int j, long double) {
-      if (is_rattler[static_cast<std::size_t>(i)]) near[static_cast<std::size_t>(i)].push_back(j);
-      if (is_rattler[static_cast<std::size_t>(j)]) near[static_cast<std::size_t>(j)].push_back(i);
-    });
-    for (int r : rattlers_) {
-      std::vector<Vec2L> nb;
-      for (int j : near[static_cast<std::size_t>(r)])
-        nb.push_back(pts_[static_cast<std::size_t>(j)]);
-      pts_[static_cast<std::size_t>(r)] = centre_in_cage(pts_[static_cast<std::size_t>(r)], nb, L_);
-      const long double c = clearance(pts_[static_cast<std::size_t>(r)], nb, L_);
-      if (!(c > 1e-6L))
-        throw std::runtime_error("rattler " + std::to_string(r) + " has no room in its cage");
-    }
+    const long double room = centre_rattlers(pts_, L_, rattlers_);
+    if (!(room > 1e-6L)) throw std::runtime_error("a rattler has no room in its cage");
   }
 
   // One pass over near pairs: the worst overlap (validity) and, when detecting, the contacts.

@@ -23,6 +23,56 @@ std::vector<Bond> find_contacts(const std::vector<Vec2L>& pts, long double L, lo
   return bonds;
 }
 
+long double cage_clearance(const Vec2L& p, const std::vector<Vec2L>& neighbours, long double L) {
+  long double c = std::numeric_limits<long double>::infinity();
+  for (const auto& q : neighbours) c = std::min(c, norm(p - q) - 1);
+  for (Side s : kSides) c = std::min(c, wall_distance(p, s, L));
+  return c;
+}
+
+Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double L) {
+  long double best = cage_clearance(p, neighbours, L);
+  long double h = 0.25L;
+  constexpr long double r = 0.70710678118654752440L;
+  static const Vec2L dirs[8] = {{1, 0}, {-1, 0}, {0, 1},  {0, -1},
+                                {r, r}, {-r, r}, {r, -r}, {-r, -r}};
+  while (h > 1e-13L) {
+    bool moved = false;
+    for (const auto& d : dirs) {
+      const Vec2L t = p + d * h;
+      const long double c = cage_clearance(t, neighbours, L);
+      if (c > best) {
+        best = c;
+        p = t;
+        moved = true;
+      }
+    }
+    if (!moved) h /= 2;
+  }
+  return p;
+}
+
+long double centre_rattlers(std::vector<Vec2L>& pts, long double L,
+                            const std::vector<int>& rattlers) {
+  if (rattlers.empty()) return std::numeric_limits<long double>::infinity();
+  std::vector<char> is_rattler(pts.size(), 0);
+  for (int r : rattlers) is_rattler[static_cast<std::size_t>(r)] = 1;
+  std::vector<std::vector<int>> near(pts.size());
+  for_each_pair_within(pts, 2.5L, [&](int i, int j, long double) {
+    if (is_rattler[static_cast<std::size_t>(i)]) near[static_cast<std::size_t>(i)].push_back(j);
+    if (is_rattler[static_cast<std::size_t>(j)]) near[static_cast<std::size_t>(j)].push_back(i);
+  });
+  long double room = std::numeric_limits<long double>::infinity();
+  for (int r : rattlers) {
+    std::vector<Vec2L> nb;
+    for (int j : near[static_cast<std::size_t>(r)]) nb.push_back(pts[static_cast<std::size_t>(j)]);
+    auto& p = pts[static_cast<std::size_t>(r)];
+    p = centre_in_cage(p, nb, L);
+    room = std::min(room, cage_clearance(p, nb, L));
+  }
+  return room;
+}
+
 long double min_pair_distance(const std::vector<Vec2L>& pts, long double radius) {
   long double best = std::numeric_limits<long double>::infinity();
   for_each_pair_within(pts, radius,

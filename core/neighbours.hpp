@@ -88,6 +88,17 @@ void for_each_pair_within(const std::vector<Vec2T<T>>& pts, T radius, F&& f) {
 std::vector<Bond> find_contacts(const std::vector<Vec2L>& pts, long double L, long double tol,
                                 const std::vector<char>& skip = {});
 
+// Rattler cages, in disk units (min distance 1, triangle side L). The clearance of a disk at p
+// is its distance to the nearest neighbour centre minus 1, or to the nearest side.
+long double cage_clearance(const Vec2L& p, const std::vector<Vec2L>& neighbours, long double L);
+// The point of largest clearance near p (the cage's centre), by compass search: cheap (a few
+// hundred evaluations over a handful of neighbours) and robust to the non-smooth max-min.
+Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double L);
+// Moves every listed disk to the centre of its cage (one after the other); returns the smallest
+// clearance reached.
+long double centre_rattlers(std::vector<Vec2L>& pts, long double L,
+                            const std::vector<int>& rattlers);
+
 // Smallest pairwise distance among points no farther apart than `radius` (infinity if none).
 long double min_pair_distance(const std::vector<Vec2L>& pts, long double radius);
 
