@@ -30,9 +30,15 @@ auto timed(double& seconds, F&& f) {
 std::string Analysis::status() const {
   if (!identification.polish.converged)
     return "bond system has no solution near the relaxed state (not certified)";
-  if (!rigidity.rigid)
+  if (!rigidity.rigid && rigidity.opening_bonds > 0)
     return fmt::format("NOT rigid: a first-order motion moves {} disks and opens {} bonds",
                        rigidity.moving_disks, rigidity.opening_bonds);
+  if (!rigidity.rigid)
+    return fmt::format(
+        "NOT certified rigid: a motion of {} disks keeps every bond to first order (within the "
+        "LP's "
+        "resolution; near-degenerate contacts look like this)",
+        rigidity.moving_disks);
   if (!stress.exists)
     return "rigid, but no balancing non-negative stress (not a first-order optimum)";
   if (!stress.strictly_positive)
