@@ -424,8 +424,13 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
       const long double rel = L ? std::fabs(d * *L - 1) : NAN;
       const bool bonds_ok =
           !b.bonds_expected || static_cast<long long>(b.pattern.bonds.size()) == *b.bonds_expected;
-      const bool ok = (!L || rel <= kTol) && bonds_ok;
+      const bool exact_ok = !b.exact || b.exact->ok;
+      const bool ok = (!L || rel <= kTol) && bonds_ok && exact_ok;
       all_ok = all_ok && ok;
+      // Closed forms are also checked exactly: every bond exactly at d, every gap exactly > 0.
+      const std::string exact_note = b.exact ? (b.exact->ok ? "; exact in Q(sqrt3): ok"
+                                                            : "; exact: FAILED " + b.exact->failure)
+                                             : "";
       if (o.json) {
         nlohmann::json j{{"class", c.id},
                          {"k", k},
@@ -436,6 +441,7 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
                          {"bonds", b.pattern.bonds.size()},
                          {"ok", ok},
                          {"source", source}};
+        if (b.exact) j["exact_check"] = b.exact->ok;
         if (o.p) j["p"] = o.p;
         if (!v.empty()) j["variant"] = v;
         std::cout << j.dump() << "\n";
@@ -445,7 +451,7 @@ int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
             format_significant(d, 17), L ? format_significant(1 / *L, 17) : "-",
             L ? fmt::format("{:.2e}", static_cast<double>(rel)) : "-",
             count_vs(b.pattern.bonds.size(), b.bonds_expected),
-            L ? source : "no formula for L in the catalogue", ok ? "" : "  FAIL");
+            (L ? source : "no formula for L in the catalogue") + exact_note, ok ? "" : "  FAIL");
       }
     }
   }
