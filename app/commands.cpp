@@ -2,13 +2,19 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <thread>
 
+#include "analysis/compare.hpp"
 #include "analysis/exact_check.hpp"
 #include "analysis/polish.hpp"
 #include "analysis/polish_mp.hpp"
@@ -17,6 +23,8 @@
 #include "constructors/registry.hpp"
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "sim/billiards.hpp"
+#include "sim/scene.hpp"
 
 namespace tripack::app {
 
@@ -550,6 +558,160 @@ int cmd_analyze(const AnalyzeOptions& o) {
                            a.pattern.rattlers.empty() ? "" : " : ",
                            fmt::join(a.pattern.rattlers, " "));
   print_analysis(a, o.digits, true);
+  return 0;
+}
+
+int cmd_billiards(const BilliardsCommandOptions& o) {
+  Scene scene = o.scene.empty() ? default_scene(static_cast<int>(o.n)) : load_scene(o.scene);
+  if (o.n && scene.n != o.n)
+    throw std::invalid_argument(
+        fmt::format("the scene has n = {} but {} was asked for", scene.n, o.n));
+  validate_scene(scene);
+  if (o.runs < 1) throw std::invalid_argument("--runs must be at least 1");
+  struct Run {
+    std::uint64_t seed = 0;
+    BilliardsResult sim;
+    std::optional<Analysis> analysis;
+    std::string error;
+  };
+  std::vector<Run> runs(static_cast<std::size_t>(o.runs));
+  std::atomic<int> next{0}, done{0};
+  std::mutex report;
+  const bool progress = !o.json && isatty(fileno(stderr));
+  const auto t0 = Clock::now();
+  auto worker = [&] {
+    for (int r; (r = next.fetch_add(1)) < o.runs;) {
+      Run& run = runs[static_cast<std::size_t>(r)];
+      run.seed = o.seed + static_cast<std::uint64_t>(r);  // run r is reproducible on its own
+      std::mt19937_64 rng(run.seed);
+      try {
+        run.sim = run_billiards(scene, rng);
+        if (scene.n >= 2 && o.certify) run.analysis = analyze_packing(run.sim.packing, {});
+      } catch (const std::exception& e) {
+        run.error = e.what();
+      }
+      const int finished = ++done;
+      if (progress) {
+        std::lock_guard<std::mutex> lock(report);
+        std::cerr << fmt::format(
+                         "\rbilliards n={}: {}/{} runs, last d = {:.12Lg}, {:.2f} M events/s      ",
+                         scene.n, finished, o.runs, run.sim.packing.d,
+                         run.sim.seconds > 0 ? run.sim.events / run.sim.seconds / 1e6 : 0.0)
+                  << std::flush;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::max(1, o.threads); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (progress) std::cerr << "\n";
+
+  // Distinct certified packings, best first, labelled like the paper: tNa, tNb, ... with the bond
+  // count appended where several packings share d.
+  std::vector<int> usable;
+  std::vector<Pattern> patterns;
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    if (runs[r].analysis && runs[r].analysis->identification.polish.converged) {
+      usable.push_back(static_cast<int>(r));
+      patterns.push_back(runs[r].analysis->pattern);
+    }
+  const std::vector<int> cls = distinct_packings(patterns);
+  struct Distinct {
+    int cls = -1;
+    int first_run = -1, count = 0;
+    long double d = 0;
+    std::size_t bonds = 0, rattlers = 0;
+    bool certified = false;
+    std::string label;
+  };
+  std::vector<Distinct> distinct;
+  for (std::size_t u = 0; u < usable.size(); ++u) {
+    const auto c = static_cast<std::size_t>(cls[u]);
+    if (distinct.size() <= c) distinct.resize(c + 1);
+    auto& x = distinct[c];
+    if (x.count++ == 0) {
+      const auto& a = *runs[static_cast<std::size_t>(usable[u])].analysis;
+      x = {static_cast<int>(c),       usable[u],     1, a.pattern.packing.d, a.pattern.bonds.size(),
+           a.pattern.rattlers.size(), a.certified(), ""};
+    }
+  }
+  std::sort(distinct.begin(), distinct.end(),
+            [](const Distinct& a, const Distinct& b) { return a.d > b.d; });
+  char rank = 'a';
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    if (i > 0 && std::fabs(distinct[i].d / distinct[i - 1].d - 1) > 1e-12L) ++rank;
+    const bool shared =
+        (i > 0 && std::fabs(distinct[i].d / distinct[i - 1].d - 1) <= 1e-12L) ||
+        (i + 1 < distinct.size() && std::fabs(distinct[i].d / distinct[i + 1].d - 1) <= 1e-12L);
+    distinct[i].label = fmt::format("t{}{}{}", scene.n, rank <= 'z' ? std::string(1, rank) : "?",
+                                    shared ? std::to_string(distinct[i].bonds) : "");
+  }
+  std::vector<std::string> run_label(runs.size(), "-");
+  for (std::size_t u = 0; u < usable.size(); ++u)
+    for (const auto& x : distinct)
+      if (x.cls == cls[u]) run_label[static_cast<std::size_t>(usable[u])] = x.label;
+  auto label_of = [&](int r) { return run_label[static_cast<std::size_t>(r)]; };
+  const double wall = seconds_since(t0);
+  if (o.json) {
+    nlohmann::json j;
+    j["n"] = scene.n;
+    j["seconds"] = wall;
+    j["runs"] = nlohmann::json::array();
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const auto& run = runs[r];
+      nlohmann::json x{{"seed", run.seed},
+                       {"events", run.sim.events},
+                       {"collisions", run.sim.collisions},
+                       {"seconds", run.sim.seconds},
+                       {"d_billiards", format_significant(run.sim.packing.d, 17)},
+                       {"stop", run.sim.stop_reason},
+                       {"label", label_of(static_cast<int>(r))}};
+      if (run.analysis) {
+        x["d"] = format_significant(run.analysis->pattern.packing.d, 17);
+        x["certificate"] = certificate_json(*run.analysis);
+      }
+      if (!run.error.empty()) x["error"] = run.error;
+      j["runs"].push_back(x);
+    }
+    j["packings"] = nlohmann::json::array();
+    for (const auto& x : distinct)
+      j["packings"].push_back({{"label", x.label},
+                               {"d", format_significant(x.d, 17)},
+                               {"bonds", x.bonds},
+                               {"rattlers", x.rattlers},
+                               {"certified", x.certified},
+                               {"runs", x.count},
+                               {"first_seed", runs[static_cast<std::size_t>(x.first_run)].seed}});
+    std::cout << j.dump() << "\n";
+    return 0;
+  }
+  std::cout << fmt::format("{:>6} {:>12} {:>12} {:>9} {:>20} {:>20} {:>6} {:>4} {:>9} {}\n", "seed",
+                           "events", "collisions", "seconds", "d (billiards)", "d (polished)",
+                           "bonds", "ratt", "certified", "packing");
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const auto& run = runs[r];
+    if (!run.error.empty()) {
+      std::cout << fmt::format("{:>6} error: {}\n", run.seed, run.error);
+      continue;
+    }
+    const auto* a = run.analysis ? &*run.analysis : nullptr;
+    std::cout << fmt::format("{:>6} {:>12} {:>12} {:>9.3f} {:>20} {:>20} {:>6} {:>4} {:>9} {}\n",
+                             run.seed, run.sim.events, run.sim.collisions, run.sim.seconds,
+                             format_significant(run.sim.packing.d, 15),
+                             a ? format_significant(a->pattern.packing.d, 15) : "-",
+                             a ? std::to_string(a->pattern.bonds.size()) : "-",
+                             a ? std::to_string(a->pattern.rattlers.size()) : "-",
+                             a ? (a->certified() ? "yes" : "no") : "-",
+                             label_of(static_cast<int>(r)));
+  }
+  std::cout << fmt::format("distinct packings ({} runs, {:.2f} s):\n", o.runs, wall);
+  for (const auto& x : distinct)
+    std::cout << fmt::format(
+        "  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} runs, first seed {})\n", x.label,
+        format_significant(x.d, 15), x.bonds, x.rattlers,
+        x.certified ? "certified" : "NOT certified", x.count, o.runs,
+        runs[static_cast<std::size_t>(x.first_run)].seed);
   return 0;
 }
 

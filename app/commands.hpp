@@ -2,6 +2,7 @@
 // and turned into one line by main().
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -50,5 +51,16 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o);
 int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o);
 int cmd_table(const GlobalOptions& g, long k_max);
 int cmd_analyze(const AnalyzeOptions& o);
+
+struct BilliardsCommandOptions {
+  long long n = 0;  // 0: the scene's n
+  int runs = 10;
+  std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
+  int threads = 1;
+  std::string scene;  // YAML file; empty: the built-in scene
+  bool json = false;
+  bool certify = true;
+};
+int cmd_billiards(const BilliardsCommandOptions& o);
 
 }  // namespace tripack::app

@@ -61,6 +61,19 @@ int main(int argc, char** argv) {
                       "write the certified packing (.txt, .csv or .json)");
   analyze->add_flag("--json", an.json, "print one JSON object");
 
+  BilliardsCommandOptions bl;
+  auto* billiards = cli.add_subcommand(
+      "billiards", "Lubachevsky-Stillinger runs from random starts, certified and ranked");
+  billiards->add_option("N", bl.n, "number of disks (or give --scene)")
+      ->check(CLI::Range(1LL, 10000000LL));
+  billiards->add_option("--runs", bl.runs, "number of runs")->check(CLI::Range(1, 1000000));
+  billiards->add_option("--seed", bl.seed, "seed of run 0 (run r uses seed + r)");
+  billiards->add_option("--threads", bl.threads, "parallel runs")->check(CLI::Range(1, 256));
+  billiards->add_option("--scene", bl.scene, "scene YAML (container, n, initial state, effects)");
+  billiards->add_flag("--json", bl.json, "print one JSON object");
+  billiards->add_flag("!--no-certify", bl.certify,
+                      "skip relax/bonds/rigidity/stress of the end states");
+
   long table_kmax = 4;
   auto* table = cli.add_subcommand("table", "Build and polish the first terms of every class");
   table->add_option("--kmax", table_kmax, "largest k per class")->check(CLI::Range(1, 50));
@@ -82,6 +95,11 @@ int main(int argc, char** argv) {
     if (*check) return cmd_check_formula(g, cf);
     if (*table) return cmd_table(g, table_kmax);
     if (*analyze) return cmd_analyze(an);
+    if (*billiards) {
+      if (bl.n == 0 && bl.scene.empty())
+        throw std::invalid_argument("billiards needs N or --scene FILE");
+      return cmd_billiards(bl);
+    }
   } catch (const std::exception& e) {
     std::cerr << "tripack: error: " << e.what() << "\n";
     return 1;

@@ -104,5 +104,16 @@ rm -rf "$tmp"
 # to 50 digits (mpmath); build --n 22 --digits 50 prints all of them.
 expect_output "build --n 22 --digits 50" "0.17939690861186597956121884705073659574141764618876" build --n 22 --digits 50
 
+# billiards: bad scenes and requests get one line and a non-zero exit.
+expect_error "billiards: malformed scene" "scene" billiards --scene "$DATA/scenes/malformed.yaml"
+expect_error "billiards: unknown effect" "gravity" billiards --scene "$DATA/scenes/unknown_effect.yaml"
+expect_error "billiards: impossible stop rule" "relative_gap" billiards --scene "$DATA/scenes/bad_gap.yaml"
+expect_error "billiards: overlapping initial points" "scene" billiards --scene "$DATA/scenes/overlap.yaml"
+expect_error "billiards: n < 1" "N" billiards 0
+expect_error "billiards: missing scene file" "scene" billiards --scene "$DATA/scenes/none.yaml"
+expect_error "billiards: scene n differs" "n = 7" billiards 8 --scene "$DATA/scenes/t7.yaml"
+# A scene file runs; t7a has d = 1/(1+sqrt3) = 0.366025403784439 (GL1995 Fig.t7).
+expect_output "billiards scene t7" "0.366025403784439" billiards --scene "$DATA/scenes/t7.yaml" --runs 10
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -3,10 +3,12 @@
 
 #include <cmath>
 
+#include "analysis/compare.hpp"
 #include "app/pipeline.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/io.hpp"
+#include "sim/billiards.hpp"
 
 namespace tripack::app {
 namespace {
@@ -89,6 +91,43 @@ TEST(Pipeline, BadPointSetsAreRejectedWithOneLine) {
   rejects({{0.1L, 0.1L}, {0.9L, 0.9L}}, std::nullopt, "outside");
   rejects({{0.1L, 0.1L}, {0.5L, -1e-6L}}, std::nullopt, "outside");
   rejects({{0.3L, 0.1L}, {0.3L, 0.1L}, {0.5L, 0.2L}}, std::nullopt, "coincide");
+}
+
+// Billiards from random starts, then the analysis: the first certified end state whose d matches
+// `target` to 1e-12 relative within `max_runs` seeds, or nullopt.
+std::optional<Analysis> billiards_find(int n, long double target, int max_runs) {
+  for (int seed = 1; seed <= max_runs; ++seed) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+    const BilliardsResult sim = run_billiards(default_scene(n), rng);
+    Analysis a = analyze_packing(sim.packing, {});
+    if (a.certified() && std::fabs(a.pattern.packing.d / target - 1) < 1e-12L) return a;
+  }
+  return std::nullopt;
+}
+
+TEST(Pipeline, BilliardsReproducesTheKnownOptimaUpTo15And22) {
+  // n = 2..15: the catalogue's closed forms (Oler 1961 for Delta(k) and Delta(k)-1; 4Delta(1),
+  // twin k=1 (t7a), sparse-rows k=2, 3 (t8a, t13a), even-ripple k=2 (t11a, Melissen), 4Delta(2)
+  // (t12a)); n = 22: d(22) = 0.179396908611866 (GL1995 Fig.t22). At most 50 runs each.
+  for (int n = 2; n <= 15; ++n) {
+    long double best = 0;
+    for (const auto& m : catalogue().classify(n)) {
+      const Pattern p = build_pattern(catalogue(), {m.cls->id, m.k, m.p, ""});
+      best = std::max(best, p.packing.d);
+    }
+    EXPECT_TRUE(billiards_find(n, best, 50).has_value())
+        << "n = " << n << ", d = " << static_cast<double>(best);
+  }
+  const auto t22a = billiards_find(22, 0.179396908611866L, 50);
+  ASSERT_TRUE(t22a.has_value());
+  EXPECT_EQ(t22a->pattern.bonds.size(), 47u);
+  EXPECT_EQ(t22a->pattern.rattlers.size(), 2u);
+  // Its contact graph (rattlers removed, walls as coloured vertices) is the builder's matrix
+  // p = 3, k = 1 graph, up to the triangle's symmetries and relabelling.
+  const Pattern built = build_pattern(catalogue(), {"matrix", 1, 3, ""});
+  const Comparison c = compare_packings(built, t22a->pattern);
+  EXPECT_TRUE(c.same) << c.reason;
+  EXPECT_TRUE(c.isomorphic);
 }
 
 }  // namespace

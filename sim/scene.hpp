@@ -1,0 +1,68 @@
+// Billiards scenes (SPEC §5): the container, the number of disks, the initial state and the effects
+// a run needs. A scene is plain data; sim/billiards.hpp runs it.
+//
+// YAML form (every key but n optional):
+//   container: triangle
+//   n: 22
+//   initial: random                 # or a file path, or {file: PATH, d: D}, or {points: [[x, y],
+//   ...], d: D} effects:
+//     growth: {rate: 0.01}          # disk diameter grows by `rate` per unit time (speeds ~1)
+//     thermostat: {every: 220}      # rescale the kinetic energy every `every` collisions
+//     pinned: [0, 5]                # these disks never move
+//     stop: {relative_gap: 1e-12, max_events: 1e9, max_seconds: 600}
+// Points of a file or of `points` follow the Packing convention: centres in the unit triangle with
+// minimum distance d (the default d is the points' own minimum distance, so they may touch).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/packing.hpp"
+
+namespace tripack {
+
+struct GrowthEffect {
+  double rate = 0.01;  // diameter per unit time, in the unit (container) triangle
+};
+struct ThermostatEffect {
+  std::uint64_t every = 0;  // collisions between rescalings; 0: 10 n
+};
+struct StopRules {
+  double relative_gap = 1e-12;  // estimated 1 - diam / diam_jammed (growth runs only)
+  std::uint64_t max_events = 1'000'000'000;
+  std::uint64_t max_collisions = 0;  // 0: no limit
+  double max_seconds = 600;
+};
+
+struct Scene {
+  int n = 0;
+  // Empty: random positions (diameter 0). Otherwise n points in the Packing convention with start
+  // distance `start_d` (the disks then have diameter d / (1 + sqrt3 d) in the container).
+  std::vector<Vec2L> points;
+  long double start_d = 0;
+  // Optional initial velocities (container units); empty: random unit speeds.
+  std::vector<Vec2> velocities;
+  std::optional<GrowthEffect> growth;
+  std::optional<ThermostatEffect> thermostat;
+  std::vector<int> pinned;
+  StopRules stop;
+};
+
+// Built-in scene: n random disks, growth 0.01, thermostat every 10 n collisions, gap 1e-12.
+Scene default_scene(int n);
+
+// Parse and validate; relative file paths are taken from `base_dir`. Any problem throws a
+// one-line std::runtime_error.
+Scene parse_scene(const std::string& yaml_text, const std::string& base_dir = ".");
+Scene load_scene(const std::string& path);
+
+// Checks n, indices, stop rules, the start points (inside the triangle, no pair closer than
+// start_d beyond 1e-12 relative). Throws a one-line std::runtime_error.
+void validate_scene(const Scene& scene);
+
+// A Packing as a scene start: its points at its own d.
+Scene scene_from_packing(const Packing& packing);
+
+}  // namespace tripack

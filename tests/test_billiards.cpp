@@ -1,0 +1,354 @@
+// sim/: the Lubachevsky–Stillinger billiards engine and its scenes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "sim/billiards.hpp"
+#include "sim/scene.hpp"
+
+namespace tripack {
+namespace {
+
+constexpr double kH = 0.8660254037844386;
+
+// Container positions of disks of diameter `diam` as a scene start (Packing convention).
+Scene container_scene(const std::vector<Vec2>& x, const std::vector<Vec2>& v, long double diam) {
+  Scene s;
+  s.n = static_cast<int>(x.size());
+  const long double r = diam / 2, side = 1 - kSqrt3 * diam;
+  for (const auto& p : x) s.points.push_back({(p.x - kSqrt3 * r) / side, (p.y - r) / side});
+  s.start_d = d_from_diameter(diam);
+  s.velocities = v;
+  return s;
+}
+
+// A random non-overlapping start at a moderate density: a short growth run, shrunk a little.
+Scene random_start(int n, std::uint64_t seed, long double shrink) {
+  Scene grow = default_scene(n);
+  grow.stop.relative_gap = 1e-2;
+  std::mt19937_64 rng(seed);
+  const BilliardsResult r = run_billiards(grow, rng);
+  Packing p = r.packing;
+  p.d *= shrink;
+  return scene_from_packing(p);
+}
+
+double energy(const std::vector<Vec2>& v) {
+  double e = 0;
+  for (const auto& x : v) e += dot(x, x) / 2;
+  return e;
+}
+
+TEST(Billiards, ElasticGasConservesEnergyAndNeverOverlaps) {
+  Scene s = random_start(50, 1, 0.8L);
+  s.stop.max_collisions = 1'000'000;
+  std::mt19937_64 rng(2);
+  const BilliardsResult r = run_billiards(s, rng);
+  EXPECT_EQ(r.stop_reason, "max collisions");
+  EXPECT_EQ(r.collisions, 1'000'000u);
+  ASSERT_EQ(r.positions.size(), 50u);
+  EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 1e-12 * r.kinetic_energy_start);
+  EXPECT_NEAR(energy(r.velocities), r.kinetic_energy_start, 1e-12 * r.kinetic_energy_start);
+  EXPECT_LE(r.max_overlap, 1e-12);
+  EXPECT_FALSE(r.jammed);
+  EXPECT_NEAR(static_cast<double>(r.diameter), static_cast<double>(diameter_from_d(s.start_d)),
+              1e-15);
+}
+
+TEST(Billiards, ElasticGasCheckedAfterEveryEvent) {
+  Scene s = random_start(50, 3, 0.95L);
+  s.stop.max_events = 100'000;
+  BilliardsOptions o;
+  o.check_every_event = true;
+  std::mt19937_64 rng(4);
+  const BilliardsResult r = run_billiards(s, rng, o);
+  EXPECT_EQ(r.events, 100'000u);
+  EXPECT_LE(r.max_overlap, 1e-12);
+  EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 1e-12 * r.kinetic_energy_start);
+}
+
+TEST(Billiards, WallReflection) {
+  for (double diam : {0.0, 0.2}) {
+    Scene s = container_scene({{0.5, 0.3}}, {{0.6, -0.8}}, diam);
+    s.stop.max_events = 1;
+    std::vector<BilliardsEvent> trace;
+    BilliardsOptions o;
+    o.trace = &trace;
+    std::mt19937_64 rng(1);
+    run_billiards(s, rng, o);
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].partner, -1 - static_cast<int>(Side::Bottom));
+    EXPECT_NEAR(trace[0].time, (0.3 - diam / 2) / 0.8, 1e-14);
+    EXPECT_NEAR(trace[0].velocity_i.x, 0.6, 1e-15);
+    EXPECT_NEAR(trace[0].velocity_i.y, 0.8, 1e-15);
+  }
+}
+
+TEST(Billiards, CornerReflectionReversesTheBisector) {
+  // From the incentre straight into the bottom-left corner along the bisector: two walls at once.
+  const double c = std::sqrt(3.0) / 2, s30 = 0.5;
+  Scene s = container_scene({{0.5, 0.5 / std::sqrt(3.0)}}, {{-c, -s30}}, 0.0);
+  s.stop.max_events = 8;
+  std::vector<BilliardsEvent> trace;
+  BilliardsOptions o;
+  o.trace = &trace;
+  std::mt19937_64 rng(1);
+  run_billiards(s, rng, o);
+  const double hit = 1 / std::sqrt(3.0);
+  Vec2 out{};
+  int at_corner = 0;
+  for (const auto& e : trace)
+    if (std::abs(e.time - hit) < 1e-12) out = e.velocity_i, ++at_corner;
+  EXPECT_GE(at_corner, 2);
+  EXPECT_NEAR(out.x, c, 1e-14);
+  EXPECT_NEAR(out.y, s30, 1e-14);
+}
+
+TEST(Billiards, TwoDisksCollideAtThePredictedTime) {
+  for (double g : {0.0, 0.05}) {
+    const double diam = 0.1;
+    Scene s = container_scene({{0.3, 0.3}, {0.7, 0.3}}, {{1, 0}, {-1, 0}}, diam);
+    if (g > 0) s.growth = GrowthEffect{g};
+    s.stop.max_events = 1;
+    std::vector<BilliardsEvent> trace;
+    BilliardsOptions o;
+    o.trace = &trace;
+    std::mt19937_64 rng(1);
+    run_billiards(s, rng, o);
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].partner, 1);
+    EXPECT_NEAR(trace[0].time, 0.3 / (2 + g), 1e-12);   // 0.4 - 2t = diam + g t
+    EXPECT_NEAR(trace[0].velocity_i.x, -1 - g, 1e-14);  // separate at 2g - u = 2 + 2g
+  }
+  // An oblique course: solve |dx + dv t| = D + g t in long double.
+  for (double g : {0.0, 0.02}) {
+    const Vec2 x1{0.3, 0.2}, x2{0.62, 0.31}, v1{0.9, 0.1}, v2{-0.7, -0.2};
+    const double diam = 0.08;
+    Scene s = container_scene({x1, x2}, {v1, v2}, diam);
+    if (g > 0) s.growth = GrowthEffect{g};
+    s.stop.max_events = 1;
+    std::vector<BilliardsEvent> trace;
+    BilliardsOptions o;
+    o.trace = &trace;
+    std::mt19937_64 rng(1);
+    run_billiards(s, rng, o);
+    const long double dx = 0.32L, dy = 0.11L, vx = -1.6L, vy = -0.3L;
+    const long double a = vx * vx + vy * vy - g * g, b = dx * vx + dy * vy - g * diam,
+                      cc = dx * dx + dy * dy - diam * diam;
+    const long double t = (-b - std::sqrt(b * b - a * cc)) / a;
+    ASSERT_EQ(trace.size(), 1u);
+    EXPECT_EQ(trace[0].partner, 1);
+    EXPECT_NEAR(trace[0].time, static_cast<double>(t), 1e-12);
+  }
+}
+
+void expect_clean_jam(const BilliardsResult& r) {
+  EXPECT_TRUE(r.jammed) << r.stop_reason;
+  EXPECT_FALSE(r.stop_reason.empty());
+  EXPECT_LE(r.max_overlap, 1e-12);
+}
+
+TEST(Billiards, GrowthJamsToTheRelativeGap) {
+  for (int n : {22, 100}) {
+    std::mt19937_64 rng(7);
+    const BilliardsResult r = run_billiards(default_scene(n), rng);
+    expect_clean_jam(r);
+    EXPECT_LT(r.relative_gap, 1e-12);
+    EXPECT_EQ(r.packing.size(), static_cast<std::size_t>(n));
+    // d is below Oler's bound and the packing is feasible to 1e-12.
+    EXPECT_LE(r.packing.d, 2 / (-3 + std::sqrt(8.0L * n + 1)));
+  }
+}
+
+TEST(Billiards, DegenerateStartsWallsCornersTouching) {
+  // Corners, a wall midpoint, all touching at d = 1/2.
+  Packing p;
+  p.points = {{0, 0}, {1, 0}, {0.5L, kSqrt3 / 2}, {0.5L, 0}, {0.25L, kSqrt3 / 4}};
+  p.d = 0.5L;
+  Scene s = scene_from_packing(p);
+  s.growth = GrowthEffect{0.01};
+  s.thermostat = ThermostatEffect{};
+  std::mt19937_64 rng(3);
+  const BilliardsResult r = run_billiards(s, rng);
+  expect_clean_jam(r);
+  EXPECT_GE(r.packing.d, 0.5L - 1e-12L);
+}
+
+TEST(Billiards, OneTwoThreeDisks) {
+  std::mt19937_64 rng(11);
+  const BilliardsResult one = run_billiards(default_scene(1), rng);
+  expect_clean_jam(one);
+  EXPECT_NEAR(static_cast<double>(one.diameter), 1 / std::sqrt(3.0), 1e-9);  // inscribed disk
+  for (int n : {2, 3}) {
+    const BilliardsResult r = run_billiards(default_scene(n), rng);
+    expect_clean_jam(r);
+    EXPECT_NEAR(static_cast<double>(r.packing.d), 1.0, 1e-9) << n;
+  }
+}
+
+TEST(Billiards, SmallHexagonalAndFourDeltaNumbers) {
+  struct Case {
+    int n;
+    long double d;
+  };
+  for (const Case c : {Case{3, 1}, Case{4, 1 / kSqrt3}, Case{6, 0.5L}, Case{10, 1 / 3.0L}}) {
+    long double best = 0;
+    for (std::uint64_t seed = 0; seed < 20 && best < c.d * (1 - 1e-9L); ++seed) {
+      std::mt19937_64 rng(seed);
+      const BilliardsResult r = run_billiards(default_scene(c.n), rng);
+      EXPECT_LE(r.max_overlap, 1e-12);
+      best = std::max(best, r.packing.d);
+    }
+    EXPECT_NEAR(static_cast<double>(best / c.d), 1.0, c.n == 3 ? 1e-9 : 1e-6) << c.n;
+  }
+}
+
+TEST(Billiards, PinnedDisksStayPut) {
+  Scene s = default_scene(12);
+  s.pinned = {0, 5};
+  std::mt19937_64 rng(5);
+  std::mt19937_64 copy = rng;
+  // Where the random start puts the disks (diameter 0: the container and Packing coincide).
+  std::uniform_real_distribution<double> u01(0, 1);
+  std::vector<Vec2> start;
+  for (int i = 0; i < 12; ++i) {
+    double a = u01(copy), b = u01(copy);
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    start.push_back({a + b / 2, b * kH});
+  }
+  const BilliardsResult r = run_billiards(s, rng);
+  EXPECT_TRUE(r.jammed);
+  EXPECT_LE(r.max_overlap, 1e-12);
+  for (int i : {0, 5}) {
+    EXPECT_EQ(r.positions[std::size_t(i)].x, start[std::size_t(i)].x);
+    EXPECT_EQ(r.positions[std::size_t(i)].y, start[std::size_t(i)].y);
+  }
+}
+
+TEST(Billiards, GrowsBackFromAShrunkPattern) {
+  // Delta(4) at 0.9 of its d (touching nothing) grows back to d = 1/3.
+  Packing p;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; i + j < 4; ++j) p.points.push_back({(i + j / 2.0L) / 3, j * kSqrt3 / 6});
+  p.d = 0.3L;
+  Scene s = scene_from_packing(p);
+  s.growth = GrowthEffect{0.005};
+  s.thermostat = ThermostatEffect{};
+  std::mt19937_64 rng(9);
+  const BilliardsResult r = run_billiards(s, rng);
+  expect_clean_jam(r);
+  EXPECT_NEAR(static_cast<double>(r.packing.d), 1 / 3.0, 1e-9);
+}
+
+TEST(Billiards, ThermostatHoldsTheEnergyAndCapsStop) {
+  Scene s = default_scene(40);
+  s.thermostat = ThermostatEffect{100};
+  s.stop.max_events = 50'000;
+  std::mt19937_64 rng(8);
+  const BilliardsResult r = run_billiards(s, rng);
+  // Pumped by growth for at most 100 collisions since the last rescale.
+  EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 0.05 * r.kinetic_energy_start);
+  EXPECT_EQ(r.stop_reason, "max events");
+  EXPECT_FALSE(r.jammed);
+  Scene slow = default_scene(200);
+  slow.growth->rate = 1e-6;
+  slow.stop.max_seconds = 0.2;
+  const BilliardsResult t = run_billiards(slow, rng);
+  EXPECT_EQ(t.stop_reason, "max seconds");
+  EXPECT_LT(t.seconds, 1.0);
+}
+
+TEST(Billiards, DeterministicForASeed) {
+  std::mt19937_64 a(42), b(42);
+  const BilliardsResult ra = run_billiards(default_scene(30), a);
+  const BilliardsResult rb = run_billiards(default_scene(30), b);
+  EXPECT_EQ(ra.events, rb.events);
+  EXPECT_EQ(ra.packing.d, rb.packing.d);
+  EXPECT_EQ(ra.packing.points, rb.packing.points);
+}
+
+TEST(Billiards, SceneParsesEveryKey) {
+  const Scene s = parse_scene(R"(
+container: triangle
+n: 3
+initial: {points: [[0, 0], [1, 0], [0.5, 0.8660254037844386]], d: 0.5}
+effects:
+  growth: {rate: 0.02}
+  thermostat: {every: 50}
+  pinned: [1]
+  stop: {relative_gap: 1e-9, max_events: 1e6, max_seconds: 5}
+)");
+  EXPECT_EQ(s.n, 3);
+  EXPECT_EQ(s.points.size(), 3u);
+  EXPECT_EQ(s.start_d, 0.5L);
+  ASSERT_TRUE(s.growth && s.thermostat);
+  EXPECT_EQ(s.growth->rate, 0.02);
+  EXPECT_EQ(s.thermostat->every, 50u);
+  EXPECT_EQ(s.pinned, std::vector<int>{1});
+  EXPECT_EQ(s.stop.relative_gap, 1e-9);
+  EXPECT_EQ(s.stop.max_events, 1'000'000u);
+  // Disk 1 is pinned in a corner (two walls): it cannot let the disks grow.
+  std::mt19937_64 rng(1);
+  const BilliardsResult r = run_billiards(s, rng);
+  EXPECT_TRUE(r.jammed);
+  EXPECT_EQ(r.stop_reason, "pinned disks touch");
+  EXPECT_NEAR(static_cast<double>(r.packing.d), 0.5, 1e-12);
+  Scene free = s;
+  free.pinned.clear();
+  const BilliardsResult f = run_billiards(free, rng);
+  EXPECT_NEAR(static_cast<double>(f.packing.d), 1.0, 1e-9);
+  const Scene plain = parse_scene("n: 5");
+  EXPECT_FALSE(plain.growth);
+  EXPECT_TRUE(plain.points.empty());
+}
+
+TEST(Billiards, SceneFromFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "tripack_billiards_test";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "pts.txt") << "0.2 0.1\n0.6 0.2\n0.5 0.5\n";
+  std::ofstream(dir / "scene.yaml") << "n: 3\ninitial: pts.txt\neffects: {growth: {}}\n";
+  const Scene s = load_scene((dir / "scene.yaml").string());
+  EXPECT_EQ(s.points.size(), 3u);
+  EXPECT_GT(s.start_d, 0.3L);
+  std::ofstream(dir / "bad.yaml") << "n: 3\ninitial: {file: pts.txt, d: 0.5}\n";
+  EXPECT_THROW(load_scene((dir / "bad.yaml").string()), std::runtime_error);
+  std::filesystem::remove_all(dir);
+}
+
+void expect_one_line_error(const std::string& yaml, const std::string& fragment) {
+  try {
+    parse_scene(yaml);
+    ADD_FAILURE() << "no error for: " << yaml;
+  } catch (const std::runtime_error& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+  }
+}
+
+TEST(Billiards, BadScenesGiveOneLineErrors) {
+  expect_one_line_error("n: [1, 2", "malformed");
+  expect_one_line_error("n: 5\neffects: {wind: {speed: 1}}", "wind");
+  expect_one_line_error("n: 5\nshape: square", "shape");
+  expect_one_line_error("container: square\nn: 5", "square");
+  expect_one_line_error("n: 0", "n must be");
+  expect_one_line_error("n: -3", "n must be");
+  expect_one_line_error("n: abc", "n");
+  expect_one_line_error("n: 2\ninitial: {points: [[0.5, 0.2], [0.52, 0.2]], d: 0.1}", "overlap");
+  expect_one_line_error("n: 1\ninitial: {points: [[2, 0.2]]}", "outside");
+  expect_one_line_error("n: 5\neffects: {stop: {relative_gap: 0}}", "relative_gap");
+  expect_one_line_error("n: 5\neffects: {stop: {relative_gap: 1.5}}", "relative_gap");
+  expect_one_line_error("n: 5\neffects: {stop: {max_events: -1}}", "max_events");
+  expect_one_line_error("n: 5\neffects: {stop: {max_seconds: -1}}", "max_seconds");
+  expect_one_line_error("n: 5\neffects: {pinned: [7]}", "pinned");
+  expect_one_line_error("n: 5\neffects: {growth: {rate: -1}}", "growth");
+  expect_one_line_error("n: 5\ninitial: /nonexistent/file.txt", "initial file");
+  Scene s = default_scene(0);
+  std::mt19937_64 rng(1);
+  EXPECT_THROW(run_billiards(s, rng), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace tripack
