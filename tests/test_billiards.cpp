@@ -151,7 +151,7 @@ void expect_clean_jam(const BilliardsResult& r) {
 }
 
 TEST(Billiards, GrowthJamsToTheRelativeGap) {
-  for (int n : {22, 100}) {
+  for (int n : {22, 100, 260}) {
     std::mt19937_64 rng(7);
     const BilliardsResult r = run_billiards(default_scene(n), rng);
     expect_clean_jam(r);

@@ -130,5 +130,31 @@ TEST(Pipeline, BilliardsReproducesTheKnownOptimaUpTo15And22) {
   EXPECT_TRUE(c.isomorphic);
 }
 
+TEST(Pipeline, BilliardsFromABuiltPatternStaysInIt) {
+  // Start t22a, t31a81.2 and 4Delta(3) at 0.999 of their d (the scene starts from the points at
+  // their own d; shrink by moving towards the centroid) with growth: the jammed state certifies
+  // as the same packing as the builder's.
+  for (const BuildRequest& req :
+       {BuildRequest{"even-ripple", 3, 0, ""}, BuildRequest{"twin", 3, 0, "cavity-2"},
+        BuildRequest{"four-delta", 3, 0, ""}}) {
+    const Pattern built = build_pattern(catalogue(), req);
+    Packing start = built.packing;
+    const Vec2L c{0.5L, kSqrt3 / 6};
+    for (auto& p : start.points) p = c + (p - c) * 0.999L;
+    start.d *= 0.999L;
+    Scene scene = scene_from_packing(start);  // positions only: the effects are named here
+    scene.growth = GrowthEffect{0.005};
+    scene.thermostat = ThermostatEffect{};
+    scene.stop.max_seconds = 60;
+    std::mt19937_64 rng(11);
+    const BilliardsResult sim = run_billiards(scene, rng);
+    EXPECT_TRUE(sim.jammed) << req.class_id << ": " << sim.stop_reason;
+    const Analysis a = analyze_packing(sim.packing, {});
+    EXPECT_TRUE(a.certified()) << req.class_id;
+    const Comparison cmp = compare_packings(built, a.pattern);
+    EXPECT_TRUE(cmp.same) << req.class_id << ": " << cmp.reason;
+  }
+}
+
 }  // namespace
 }  // namespace tripack::app
