@@ -584,8 +584,21 @@ int cmd_billiards(const BilliardsCommandOptions& o) {
       Run& run = runs[static_cast<std::size_t>(r)];
       run.seed = o.seed + static_cast<std::uint64_t>(r);  // run r is reproducible on its own
       std::mt19937_64 rng(run.seed);
+      BilliardsOptions sim_options;
+      if (progress)  // a live line for long runs; nothing at all when not a terminal
+        sim_options.progress = [&, r](const BilliardsProgress& p) {
+          std::lock_guard<std::mutex> lock(report);
+          std::cerr
+              << fmt::format(
+                     "\rbilliards n={}: {}/{} runs done; run {}: {:.3g} events, {:.2f} M events/s, "
+                     "d = {:.10Lg}, gap ~{:.1e}      ",
+                     scene.n, done.load(), o.runs, r, static_cast<double>(p.events),
+                     p.seconds > 0 ? static_cast<double>(p.events) / p.seconds / 1e6 : 0.0,
+                     d_from_diameter(p.diameter), p.relative_gap)
+              << std::flush;
+        };
       try {
-        run.sim = run_billiards(scene, rng);
+        run.sim = run_billiards(scene, rng, sim_options);
         if (scene.n >= 2 && o.certify) run.analysis = analyze_packing(run.sim.packing, {});
       } catch (const std::exception& e) {
         run.error = e.what();

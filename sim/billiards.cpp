@@ -141,6 +141,7 @@ class Engine {
     block_energy_ = energy_target_;
     rebuild_heap();
     std::uint64_t since_sync = 0, since_rescale = 0, stalls = 0;
+    double next_progress = opt_.progress_seconds;
     double block_diam = diameter(0);
     auto stop = [&](const char* why, bool jammed) {
       r.stop_reason = why;
@@ -194,10 +195,16 @@ class Engine {
         stop("max collisions", false);
         break;
       }
-      if ((r.events & 4095) == 0 &&
-          std::chrono::duration<double>(Clock::now() - start).count() > stop_.max_seconds) {
-        stop("max seconds", false);
-        break;
+      if ((r.events & 4095) == 0) {
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+        if (elapsed > stop_.max_seconds) {
+          stop("max seconds", false);
+          break;
+        }
+        if (opt_.progress && elapsed >= next_progress) {
+          next_progress = elapsed + opt_.progress_seconds;
+          opt_.progress({r.events, r.collisions, elapsed, diameter(now_), gap_});
+        }
       }
       const bool rescale = kThermostat && since_rescale >= every_;
       if (since_sync >= block_ || rescale) {

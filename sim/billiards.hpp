@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,6 +30,14 @@ struct BilliardsEvent {
   Vec2 position_i, velocity_i;  // disk i just after the collision (container units)
 };
 
+// A snapshot for progress displays.
+struct BilliardsProgress {
+  std::uint64_t events = 0, collisions = 0;
+  double seconds = 0;       // wall time so far
+  double diameter = 0;      // current disk diameter in the container
+  double relative_gap = 1;  // last estimate of 1 - diam / diam_jammed
+};
+
 struct BilliardsOptions {
   // Check every pair for overlap after every event (slow; tests). The largest relative overlap
   // seen is reported in BilliardsResult::max_overlap either way (at the end otherwise).
@@ -38,6 +47,10 @@ struct BilliardsOptions {
   // Compile every effect's code into the engine even when the scene does not use it (benchmark of
   // the cost of an absent effect).
   bool all_policies = false;
+  // Called about every `progress_seconds` of wall time (checked every 4096 events, where the
+  // wall-time stop rule is checked anyway); empty: never called.
+  std::function<void(const BilliardsProgress&)> progress;
+  double progress_seconds = 0.5;
 };
 
 struct BilliardsResult {
