@@ -69,15 +69,21 @@ TEST(Billiards, ElasticGasCheckedAfterEveryEvent) {
   EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 1e-12 * r.kinetic_energy_start);
 }
 
+// Runs a scene with seed 1 and returns every collision it processed.
+std::vector<BilliardsEvent> traced_run(const Scene& s) {
+  std::vector<BilliardsEvent> trace;
+  BilliardsOptions o;
+  o.trace = &trace;
+  std::mt19937_64 rng(1);
+  run_billiards(s, rng, o);
+  return trace;
+}
+
 TEST(Billiards, WallReflection) {
   for (double diam : {0.0, 0.2}) {
     Scene s = container_scene({{0.5, 0.3}}, {{0.6, -0.8}}, diam);
     s.stop.max_events = 1;
-    std::vector<BilliardsEvent> trace;
-    BilliardsOptions o;
-    o.trace = &trace;
-    std::mt19937_64 rng(1);
-    run_billiards(s, rng, o);
+    const std::vector<BilliardsEvent> trace = traced_run(s);
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].partner, -1 - static_cast<int>(Side::Bottom));
     EXPECT_NEAR(trace[0].time, (0.3 - diam / 2) / 0.8, 1e-14);
@@ -91,11 +97,7 @@ TEST(Billiards, CornerReflectionReversesTheBisector) {
   const double c = std::sqrt(3.0) / 2, s30 = 0.5;
   Scene s = container_scene({{0.5, 0.5 / std::sqrt(3.0)}}, {{-c, -s30}}, 0.0);
   s.stop.max_events = 8;
-  std::vector<BilliardsEvent> trace;
-  BilliardsOptions o;
-  o.trace = &trace;
-  std::mt19937_64 rng(1);
-  run_billiards(s, rng, o);
+  const std::vector<BilliardsEvent> trace = traced_run(s);
   const double hit = 1 / std::sqrt(3.0);
   Vec2 out{};
   int at_corner = 0;
@@ -112,11 +114,7 @@ TEST(Billiards, TwoDisksCollideAtThePredictedTime) {
     Scene s = container_scene({{0.3, 0.3}, {0.7, 0.3}}, {{1, 0}, {-1, 0}}, diam);
     if (g > 0) s.growth = GrowthEffect{g};
     s.stop.max_events = 1;
-    std::vector<BilliardsEvent> trace;
-    BilliardsOptions o;
-    o.trace = &trace;
-    std::mt19937_64 rng(1);
-    run_billiards(s, rng, o);
+    const std::vector<BilliardsEvent> trace = traced_run(s);
     ASSERT_EQ(trace.size(), 1u);
     EXPECT_EQ(trace[0].partner, 1);
     EXPECT_NEAR(trace[0].time, 0.3 / (2 + g), 1e-12);   // 0.4 - 2t = diam + g t
@@ -129,11 +127,7 @@ TEST(Billiards, TwoDisksCollideAtThePredictedTime) {
     Scene s = container_scene({x1, x2}, {v1, v2}, diam);
     if (g > 0) s.growth = GrowthEffect{g};
     s.stop.max_events = 1;
-    std::vector<BilliardsEvent> trace;
-    BilliardsOptions o;
-    o.trace = &trace;
-    std::mt19937_64 rng(1);
-    run_billiards(s, rng, o);
+    const std::vector<BilliardsEvent> trace = traced_run(s);
     const long double dx = 0.32L, dy = 0.11L, vx = -1.6L, vy = -0.3L;
     const long double a = vx * vx + vy * vy - g * g, b = dx * vx + dy * vy - g * diam,
                       cc = dx * dx + dy * dy - diam * diam;
