@@ -112,8 +112,7 @@ std::string count_vs(std::size_t got, const std::optional<long long>& expected) 
                      static_cast<long long>(got) == *expected ? "" : ", MISMATCH");
 }
 
-void print_analysis(const Analysis& a, int digits, bool show_stage_times) {
-  const auto& pk = a.pattern.packing;
+void print_analysis(const Analysis& a, bool show_stage_times) {
   std::cout << fmt::format(
       "{:<10} relax: {} LP steps, {}; polish residual {:.2g}, {} candidates, {} rejected\n",
       "analysis", a.relax.iterations,
@@ -163,8 +162,6 @@ void print_analysis(const Analysis& a, int digits, bool show_stage_times) {
         "time", a.times.relax * 1e3, a.times.bonds * 1e3, a.times.rigidity * 1e3,
         a.times.stress * 1e3,
         a.multiprecision ? fmt::format(", mpfr {:.3f} ms", a.times.multiprecision * 1e3) : "");
-  (void)pk;
-  (void)digits;
 }
 
 void print_build(const Built& b, int digits) {
@@ -197,7 +194,7 @@ void print_build(const Built& b, int digits) {
     std::cout << fmt::format("{:<10} bonds from geometry {} the builder's, rattlers {}\n",
                              "certify", b.bonds_match() ? "equal" : "DIFFER from",
                              b.rattlers_match() ? "equal" : "DIFFER");
-    print_analysis(*b.analysis, digits, false);
+    print_analysis(*b.analysis, false);
   } else if (b.certify_skipped) {
     std::cout << fmt::format(
         "{:<10} skipped for n > {} (LP certification; use --no-certify to silence)\n", "certify",
@@ -557,7 +554,7 @@ int cmd_analyze(const AnalyzeOptions& o) {
   std::cout << fmt::format("{:<10} {}{}{}\n", "rattlers", a.pattern.rattlers.size(),
                            a.pattern.rattlers.empty() ? "" : " : ",
                            fmt::join(a.pattern.rattlers, " "));
-  print_analysis(a, o.digits, true);
+  print_analysis(a, true);
   return 0;
 }
 
