@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -82,9 +83,16 @@ class EventQueue {
       const std::size_t c = 4 * k + 1;
       if (c >= n) break;
       std::size_t m = c;
-      const std::size_t end = std::min(c + 4, n);
-      for (std::size_t q = c + 1; q < end; ++q)
-        if (h_[q].t < h_[m].t) m = q;
+      if (c + 4 <= n) {  // all four children: the first smallest, selected without branches
+        const double t0 = h_[c].t, t1 = h_[c + 1].t, t2 = h_[c + 2].t, t3 = h_[c + 3].t;
+        const bool s01 = t1 < t0, s23 = t3 < t2;
+        const std::size_t m01 = c + std::size_t(s01), m23 = c + 2 + std::size_t(s23);
+        const double t01 = std::min(t0, t1), t23 = std::min(t2, t3);
+        m = m01 + (m23 - m01) * std::size_t(t23 < t01);
+      } else {
+        for (std::size_t q = c + 1; q < n; ++q)
+          if (h_[q].t < h_[m].t) m = q;
+      }
       if (h_[m].t >= nd.t) break;
       place(k, h_[m]);
       k = m;
@@ -297,7 +305,10 @@ class Engine {
     my_ = std::max(1, int(kH / cell_size_));
     wx_ = 1.0 / mx_;
     wy_ = kH / my_;
-    cells_.assign(std::size_t(mx_) * std::size_t(my_), {});
+    cell_count_.assign(std::size_t(mx_) * std::size_t(my_), 0);
+    cell_cap_ = 8;
+    nb_.assign(9 * std::size_t(cell_cap_), 0);
+    cell_list_.assign(cell_count_.size() * std::size_t(cell_cap_), 0);
     for (int i = 0; i < n_; ++i) {
       auto& d = disks_[std::size_t(i)];
       const int cx = std::clamp(int(d.x.x / wx_), 0, mx_ - 1);
@@ -305,19 +316,34 @@ class Engine {
       insert(i, cy * mx_ + cx);
     }
   }
+  // Cells are stored flat: cell c holds cell_count_[c] disks at cell_list_[c * cell_cap_ ...].
+  // A full cell doubles the capacity of all (order within each cell kept).
+  void grow_cells() {
+    const int cap = 2 * cell_cap_;
+    std::vector<int> list(cell_count_.size() * std::size_t(cap));
+    for (std::size_t c = 0; c < cell_count_.size(); ++c)
+      std::copy_n(cell_list_.begin() + std::ptrdiff_t(c * std::size_t(cell_cap_)), cell_count_[c],
+                  list.begin() + std::ptrdiff_t(c * std::size_t(cap)));
+    cell_list_.swap(list);
+    cell_cap_ = cap;
+    nb_.assign(9 * std::size_t(cap), 0);
+  }
+  const int* cell_begin(int c) const {
+    return cell_list_.data() + std::size_t(c) * std::size_t(cell_cap_);
+  }
   void insert(int i, int c) {
-    auto& list = cells_[std::size_t(c)];
+    if (cell_count_[std::size_t(c)] == cell_cap_) grow_cells();
+    const int k = cell_count_[std::size_t(c)]++;
+    cell_list_[std::size_t(c) * std::size_t(cell_cap_) + std::size_t(k)] = i;
     disks_[std::size_t(i)].cell = c;
-    disks_[std::size_t(i)].slot = int(list.size());
-    list.push_back(i);
+    disks_[std::size_t(i)].slot = k;
   }
   void remove(int i) {
     auto& d = disks_[std::size_t(i)];
-    auto& list = cells_[std::size_t(d.cell)];
-    const int last = list.back();
-    list[std::size_t(d.slot)] = last;
+    int* list = cell_list_.data() + std::size_t(d.cell) * std::size_t(cell_cap_);
+    const int last = list[--cell_count_[std::size_t(d.cell)]];
+    list[d.slot] = last;
     disks_[std::size_t(last)].slot = d.slot;
-    list.pop_back();
   }
   void cross(int i, int code) {
     auto& d = disks_[std::size_t(i)];
@@ -336,15 +362,16 @@ class Engine {
   // diameters D growing at g: |dx + dv t|^2 = (D + g t)^2. kInf when they never touch or not
   // before `best` (then the square root is skipped: t >= c / (-2b) when a >= 0).
   static double pair_time(Vec2 dx, Vec2 dv, double D, double g, double best) {
+    // The cheap rejections are combined without branches (each one alone is data-dependent and
+    // unpredictable); only pairs that may beat `best` take the branch to the square root.
     const double b = dot(dx, dv) - g * D;
     const double a = dot(dv, dv) - g * g;
-    if (b >= 0 && a >= 0) return kInf;  // separating at least as fast as they grow
-    double c = dot(dx, dx) - D * D;
-    if (c <= 0) {
-      if (b < 0) return 0;  // touching (or rounding overlap) and approaching: now
-      c = 0;
-    }
-    if (a >= 0 && c >= -2 * b * best) return kInf;
+    const double c0 = dot(dx, dx) - D * D;
+    // c <= 0: touching (or rounding overlap); with b < 0 the root below is exactly 0 (now).
+    const double c = c0 > 0 ? c0 : 0;
+    const bool grows_slower = a >= 0;
+    const bool never = (grows_slower & (b >= 0)) | (grows_slower & (c >= -2 * b * best));
+    if (never) return kInf;
     const double disc = b * b - a * c;
     if (disc < 0) return kInf;
     if (b < 0) return c / (-b + std::sqrt(disc));  // no cancellation
@@ -384,14 +411,33 @@ class Engine {
         if (t < best) best = t, partner = kCrossYMinus;
       }
     }
+    // Gather the neighbours (same order as a cell-by-cell scan) into one list first.
+    int* nb = nb_.data();
+    int m = 0, own = 0;  // own: i's place in the list
+    const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, mx_ - 1);
     for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, my_ - 1); ++y)
-      for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, mx_ - 1); ++x)
-        for (int j : cells_[std::size_t(y * mx_ + x)]) {
-          if (j == i) continue;
-          const auto& dj = disks_[std::size_t(j)];
-          const double t = pair_time(position(dj) - xi, dj.v - di.v, D, g, best);
-          if (t < best) best = t, partner = j;
-        }
+      for (int x = x0; x <= x1; ++x) {
+        const int c = y * mx_ + x;
+        const int count = cell_count_[std::size_t(c)];
+        if (count <= 8) [[likely]]
+          std::memcpy(nb + m, cell_begin(c), 8 * sizeof(int));
+        else
+          std::memcpy(nb + m, cell_begin(c), std::size_t(count) * sizeof(int));
+        if (c == di.cell) own = m + di.slot;
+        m += count;
+      }
+    const Vec2 vi = di.v;
+    const double now = now_;
+    auto scan = [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k) {
+        const int j = nb[k];
+        const auto& dj = disks_[std::size_t(j)];
+        const double t = pair_time(dj.x + dj.v * (now - dj.t) - xi, dj.v - vi, D, g, best);
+        if (t < best) best = t, partner = j;
+      }
+    };
+    scan(0, own);
+    scan(own + 1, m);
     if (partner == kNoEvent) return heap_.erase(i);
     heap_.set({now_ + best, i, partner, partner >= 0 ? traj_[std::size_t(partner)] : 0});
   }
@@ -472,7 +518,6 @@ class Engine {
     if constexpr (kPinned) pin_limit_ -= now_;
     now_ = 0;
     if (diam0_ > cell_size_) {  // only when the start was already larger than the cap
-      for (auto& c : cells_) c.clear();
       build_cells(2 * diam0_);
     }
   }
@@ -499,8 +544,9 @@ class Engine {
       const int cx = di.cell % mx_, cy = di.cell / mx_;
       for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, my_ - 1); ++y)
         for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, mx_ - 1); ++x)
-          for (int j : cells_[std::size_t(y * mx_ + x)])
-            if (j > i) worst = std::max(worst, D - norm(position(disks_[std::size_t(j)]) - xi));
+          for (int k = 0; k < cell_count_[std::size_t(y * mx_ + x)]; ++k)
+            if (const int j = cell_begin(y * mx_ + x)[k]; j > i)
+              worst = std::max(worst, D - norm(position(disks_[std::size_t(j)]) - xi));
     }
     return worst / D;
   }
@@ -524,7 +570,9 @@ class Engine {
   std::vector<Disk> disks_;
   std::vector<std::uint32_t> traj_;
   std::vector<char> pinned_;
-  std::vector<std::vector<int>> cells_;
+  std::vector<int> cell_list_, cell_count_;
+  int cell_cap_ = 8;
+  std::vector<int> nb_;  // predict's neighbour list: 9 cells of cell_cap_
   EventQueue heap_;
   double cell_size_ = 0, wx_ = 1, wy_ = 1;
   int mx_ = 1, my_ = 1;
