@@ -98,11 +98,15 @@ Scene default_scene(int n) {
   return s;
 }
 
-Scene scene_from_packing(const Packing& packing) {
+Scene scene_from_packing(const Packing& packing, std::optional<double> growth_rate) {
   Scene s;
   s.n = static_cast<int>(packing.size());
   s.points = packing.points;
   s.start_d = packing.d;
+  if (growth_rate) {
+    s.growth = GrowthEffect{*growth_rate};
+    s.thermostat = ThermostatEffect{};
+  }
   return s;
 }
 

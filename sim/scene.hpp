@@ -62,7 +62,8 @@ Scene load_scene(const std::string& path);
 // start_d beyond 1e-12 relative). Throws a one-line std::runtime_error.
 void validate_scene(const Scene& scene);
 
-// A Packing as a scene start: its points at its own d.
-Scene scene_from_packing(const Packing& packing);
+// A Packing as a scene start: its points at its own d. Without `growth_rate` the scene names no
+// effect (an elastic gas that never jams); with it, growth at that rate plus the thermostat.
+Scene scene_from_packing(const Packing& packing, std::optional<double> growth_rate = std::nullopt);
 
 }  // namespace tripack

@@ -161,9 +161,7 @@ TEST(Billiards, DegenerateStartsWallsCornersTouching) {
   Packing p;
   p.points = {{0, 0}, {1, 0}, {0.5L, kSqrt3 / 2}, {0.5L, 0}, {0.25L, kSqrt3 / 4}};
   p.d = 0.5L;
-  Scene s = scene_from_packing(p);
-  s.growth = GrowthEffect{0.01};
-  s.thermostat = ThermostatEffect{};
+  Scene s = scene_from_packing(p, 0.01);
   std::mt19937_64 rng(3);
   const BilliardsResult r = run_billiards(s, rng);
   expect_clean_jam(r);
@@ -227,9 +225,7 @@ TEST(Billiards, GrowsBackFromAShrunkPattern) {
   for (int i = 0; i < 4; ++i)
     for (int j = 0; i + j < 4; ++j) p.points.push_back({(i + j / 2.0L) / 3, j * kSqrt3 / 6});
   p.d = 0.3L;
-  Scene s = scene_from_packing(p);
-  s.growth = GrowthEffect{0.005};
-  s.thermostat = ThermostatEffect{};
+  Scene s = scene_from_packing(p, 0.005);
   std::mt19937_64 rng(9);
   const BilliardsResult r = run_billiards(s, rng);
   expect_clean_jam(r);

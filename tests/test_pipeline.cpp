@@ -142,9 +142,7 @@ TEST(Pipeline, BilliardsFromABuiltPatternStaysInIt) {
     const Vec2L c{0.5L, kSqrt3 / 6};
     for (auto& p : start.points) p = c + (p - c) * 0.999L;
     start.d *= 0.999L;
-    Scene scene = scene_from_packing(start);  // positions only: the effects are named here
-    scene.growth = GrowthEffect{0.005};
-    scene.thermostat = ThermostatEffect{};
+    Scene scene = scene_from_packing(start, 0.005);
     scene.stop.max_seconds = 60;
     std::mt19937_64 rng(11);
     const BilliardsResult sim = run_billiards(scene, rng);
