@@ -12,9 +12,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kH = 0.8660254037844386;  // sqrt3 / 2: height of the unit triangle
-// Partner codes: >= 0 a disk, -1 - side a wall, then the four cell faces.
-constexpr int kCrossXPlus = -4, kCrossXMinus = -5, kCrossYPlus = -6, kCrossYMinus = -7;
-constexpr int kNoEvent = -8;
+// Partner codes: >= 0 a disk, -1 - side a wall, then a neighbourhood update.
+constexpr int kUpdate = -4;
+constexpr int kNoEvent = -5;
 
 struct Event {
   double t;
@@ -31,6 +31,11 @@ class EventQueue {
     ev_.assign(std::size_t(n), Event{kInf, 0, kNoEvent, 0});
   }
   bool empty() const { return h_.empty(); }
+  // Restart the clock: every time minus dt (monotone, so the heap order holds).
+  void shift(double dt) {
+    for (auto& nd : h_) nd.t -= dt;
+    for (auto& e : ev_) e.t -= dt;
+  }
   const Event& top() const { return ev_[std::size_t(h_.front().i)]; }
   void set(const Event& e) {
     const std::size_t i = std::size_t(e.i);
@@ -104,10 +109,51 @@ class EventQueue {
   std::vector<Event> ev_;
 };
 
+// Collision times of one disk with m neighbours at relative positions (px, py) and relative
+// velocities (ux, uy), all diameters D growing at g: |p + u t|^2 = (D + g t)^2, kInf when they
+// never touch. Branch-free, so the loop vectorises (whether a pair approaches is data-dependent,
+// and a branch on it mispredicts often): both cancellation-free forms of the root are computed
+// and one is selected. The AVX2 clone is chosen at load time where the CPU has it (no FMA: every
+// clone rounds alike). The arrays are padded to a multiple of 4; extra lanes are ignored.
+__attribute__((target_clones("avx2", "default"))) void pair_times(
+    int m, const double* __restrict px, const double* __restrict py, const double* __restrict ux,
+    const double* __restrict uy, double D, double g, double* __restrict t) {
+  for (int k = 0; k < m; ++k) {
+    const double b = px[k] * ux[k] + py[k] * uy[k] - g * D;
+    const double a = ux[k] * ux[k] + uy[k] * uy[k] - g * g;
+    const double c0 = px[k] * px[k] + py[k] * py[k] - D * D;
+    // c <= 0: touching (or rounding overlap); approaching, the root is then exactly 0 (now).
+    const double c = std::max(c0, 0.0);
+    const double disc = b * b - a * c;
+    const double root = std::sqrt(std::max(disc, 0.0));
+    // Approaching (b < 0): c / (root - b). Receding but growth outruns it (a < 0):
+    // (b + root) / -a. Otherwise (receding faster than growth, or a miss: disc < 0) never.
+    // Every operation runs on every lane; only values are selected (what lets it vectorise).
+    const bool approaching = b < 0;
+    const double num = approaching ? c : b + root;
+    const double den = approaching ? root - b : -a;
+    const double q = num / den;
+    const bool hit = (approaching | (a < 0)) & (disc >= 0);
+    t[k] = hit ? q : kInf;
+  }
+}
+
+// Hot per-disk state: position and velocity at the disk's own time t (lazy update).
 struct Disk {
-  Vec2 x, v;  // at time t (lazy update)
+  Vec2 x, v;
   double t = 0;
+};
+
+// Each disk's neighbourhood (bounding neighbourhoods, Donev, Torquato & Stillinger 2005): a fixed
+// circle that contains the growing disk until the disk's next update event. Two disks can touch
+// only if their neighbourhoods overlap, so a disk predicts against its neighbour list alone
+// (about the six contacts near jamming, against ~10 disks in 9 cells of a cell grid) and there are
+// no cell-crossing events; the grid only indexes the anchors, which move at updates.
+struct Neighbourhood {
+  Vec2 anchor;
+  double radius = 0;
   int cell = 0, slot = 0;
+  unsigned walls = 0;  // bit s: the neighbourhood reaches side s
 };
 
 // Everything the engine needs, already in container units.
@@ -118,6 +164,11 @@ struct Setup {
   std::uint64_t thermostat_every = 0;
   StopRules stop;
 };
+
+// Neighbourhood radius = disk radius + kSkin * (largest diameter). Near jamming the second shell
+// of neighbours is sqrt3 D away, so any skin below 0.36 D keeps the lists at the contacts; a
+// larger skin means fewer updates at low density (bench_billiards measured 0.1 .. 0.3).
+constexpr double kSkin = 0.2;
 
 // kGrowth, kThermostat, kPinned: which effects are compiled in. Absent effects are constant-folded
 // away (rate 0, no rescaling, no pinned tests on the hot path).
@@ -130,12 +181,13 @@ class Engine {
     if constexpr (kPinned) pinned_ = s.pinned;
     diam0_ = s.diam0;
     disks_.resize(std::size_t(n_));
+    hood_.resize(std::size_t(n_));
     traj_.assign(std::size_t(n_), 0);
     for (int i = 0; i < n_; ++i) {
       disks_[std::size_t(i)].x = s.x[std::size_t(i)];
       disks_[std::size_t(i)].v = is_pinned(i) ? Vec2{} : s.v[std::size_t(i)];
     }
-    build_cells(std::max(s.diam_cap, s.diam0));
+    build_neighbourhoods(std::max(s.diam_cap, s.diam0) * (1 + 1e-9));
     block_ = std::max<std::uint64_t>(20 * std::uint64_t(n_), 2000);
     if constexpr (kPinned) pin_limit_ = pinned_limit();
   }
@@ -168,7 +220,6 @@ class Engine {
           break;
         }
       }
-      auto& di = disks_[std::size_t(e.i)];
       now_ = e.t;
       if (e.j >= 0 && e.traj != traj_[std::size_t(e.j)]) {  // partner changed course: re-plan
         predict(e.i);
@@ -184,14 +235,14 @@ class Engine {
         predict(e.i);
         predict(e.j);
       } else if (e.j >= -3) {
-        advance(di);
+        advance(disks_[std::size_t(e.i)]);
         bounce(e.i, static_cast<Side>(-1 - e.j));
         ++r.collisions;
         ++since_rescale;
         record(r, e.i, e.j);
         predict(e.i);
       } else {
-        cross(e.i, e.j);
+        relist(e.i);
         predict(e.i);
       }
       if (opt_.check_every_event) r.max_overlap = std::max(r.max_overlap, max_overlap());
@@ -217,7 +268,7 @@ class Engine {
       const bool rescale = kThermostat && since_rescale >= every_;
       if (since_sync >= block_ || rescale) {
         block_time_ += now_;
-        sync();
+        const bool rebuilt = sync();
         if constexpr (kGrowth) {
           if (since_sync >= block_) {
             const double d = diameter(0);
@@ -251,7 +302,7 @@ class Engine {
           since_rescale = 0;
         }
         if (block_energy_ < 0) block_energy_ = 2 * kinetic_energy();
-        rebuild_heap();
+        if (rescale || rebuilt) rebuild_heap();  // else the shifted predictions still hold
       }
     }
     sync();
@@ -298,26 +349,127 @@ class Engine {
     return e;
   }
 
-  // --- cells: a grid over the bounding box, cell side >= the largest diameter allowed ---
-  void build_cells(double size) {
-    cell_size_ = size * (1 + 1e-9) + 1e-300;
+  // --- neighbourhoods ---
+  // A grid over the bounding box indexes the anchors; cell side >= the largest neighbourhood
+  // diameter (the largest disk diameter `diam_max` plus twice the skin), so overlapping
+  // neighbourhoods are anchored in adjacent cells.
+  void build_neighbourhoods(double diam_max) {
+    diam_max_ = diam_max + 1e-300;
+    skin_ = kSkin * diam_max_;
+    cell_size_ = (diam_max_ + 2 * skin_) * (1 + 1e-9);
     mx_ = std::max(1, int(1.0 / cell_size_));
     my_ = std::max(1, int(kH / cell_size_));
     wx_ = 1.0 / mx_;
     wy_ = kH / my_;
     cell_count_.assign(std::size_t(mx_) * std::size_t(my_), 0);
     cell_cap_ = 8;
-    nb_.assign(9 * std::size_t(cell_cap_), 0);
     cell_list_.assign(cell_count_.size() * std::size_t(cell_cap_), 0);
+    nbr_cap_ = 16;
+    nbr_count_.assign(std::size_t(n_), 0);
+    nbr_.assign(std::size_t(n_) * std::size_t(nbr_cap_), 0);
+    batch_.assign(5 * std::size_t(nbr_cap_), 0.0);
     for (int i = 0; i < n_; ++i) {
-      auto& d = disks_[std::size_t(i)];
-      const int cx = std::clamp(int(d.x.x / wx_), 0, mx_ - 1);
-      const int cy = std::clamp(int(d.x.y / wy_), 0, my_ - 1);
-      insert(i, cy * mx_ + cx);
+      advance(disks_[std::size_t(i)]);
+      set_neighbourhood(i);
+      cell_insert(i);
     }
+    for (int i = 0; i < n_; ++i)
+      for_each_overlapping(i, [&](int j) {
+        if (j > i) add_neighbours(i, j);
+      });
   }
-  // Cells are stored flat: cell c holds cell_count_[c] disks at cell_list_[c * cell_cap_ ...].
-  // A full cell doubles the capacity of all (order within each cell kept).
+  // A new neighbourhood around disk i's present position.
+  void set_neighbourhood(int i) {
+    auto& h = hood_[std::size_t(i)];
+    h.anchor = disks_[std::size_t(i)].x;
+    h.radius = diameter(now_) / 2 + skin_;
+    h.walls = 0;
+    for (Side s : kSides)
+      if (wall_distance(h.anchor, s, 1.0) < h.radius * (1 + 1e-9)) h.walls |= 1u << unsigned(s);
+  }
+  // Calls f(j) for every other disk j whose neighbourhood overlaps i's (a relative slack of 1e-9
+  // covers the rounding of positions against the neighbourhood boundary).
+  template <class F>
+  void for_each_overlapping(int i, F&& f) const {
+    const auto& h = hood_[std::size_t(i)];
+    const int cx = h.cell % mx_, cy = h.cell / mx_;
+    const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, mx_ - 1);
+    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, my_ - 1); ++y)
+      for (int x = x0; x <= x1; ++x) {
+        const int c = y * mx_ + x;
+        const int* list = cell_begin(c);
+        for (int k = 0; k < cell_count_[std::size_t(c)]; ++k) {
+          const int j = list[k];
+          if (j == i) continue;
+          const auto& hj = hood_[std::size_t(j)];
+          const double reach = (h.radius + hj.radius) * (1 + 1e-9);
+          const Vec2 dx = hj.anchor - h.anchor;
+          if (dot(dx, dx) < reach * reach) f(j);
+        }
+      }
+  }
+  // Update event: disk i reached the edge of its neighbourhood; give it a new one.
+  void relist(int i) {
+    advance(disks_[std::size_t(i)]);
+    const int* list = neighbours(i);
+    for (int k = 0; k < nbr_count_[std::size_t(i)]; ++k) drop_neighbour(list[k], i);
+    nbr_count_[std::size_t(i)] = 0;
+    cell_remove(i);
+    set_neighbourhood(i);
+    cell_insert(i);
+    for_each_overlapping(i, [&](int j) { add_neighbours(i, j); });
+  }
+  const int* neighbours(int i) const {
+    return nbr_.data() + std::size_t(i) * std::size_t(nbr_cap_);
+  }
+  void add_neighbours(int i, int j) {
+    if (nbr_count_[std::size_t(i)] == nbr_cap_ || nbr_count_[std::size_t(j)] == nbr_cap_)
+      grow_neighbour_lists();
+    nbr_[std::size_t(i) * std::size_t(nbr_cap_) + std::size_t(nbr_count_[std::size_t(i)]++)] = j;
+    nbr_[std::size_t(j) * std::size_t(nbr_cap_) + std::size_t(nbr_count_[std::size_t(j)]++)] = i;
+  }
+  void drop_neighbour(int j, int i) {  // remove i from j's list
+    int* list = nbr_.data() + std::size_t(j) * std::size_t(nbr_cap_);
+    int& count = nbr_count_[std::size_t(j)];
+    for (int k = 0; k < count; ++k)
+      if (list[k] == i) {
+        list[k] = list[--count];
+        return;
+      }
+  }
+  // Lists are stored flat with one capacity for all; a full list doubles it (rare: low density).
+  void grow_neighbour_lists() {
+    const int cap = 2 * nbr_cap_;
+    std::vector<int> list(std::size_t(n_) * std::size_t(cap));
+    for (int i = 0; i < n_; ++i)
+      std::copy_n(neighbours(i), nbr_count_[std::size_t(i)],
+                  list.begin() + std::ptrdiff_t(std::size_t(i) * std::size_t(cap)));
+    nbr_.swap(list);
+    nbr_cap_ = cap;
+    batch_.assign(5 * std::size_t(nbr_cap_), 0.0);
+  }
+  // Anchor cells, stored flat: cell c holds cell_count_[c] disks at cell_list_[c * cell_cap_ ...].
+  const int* cell_begin(int c) const {
+    return cell_list_.data() + std::size_t(c) * std::size_t(cell_cap_);
+  }
+  void cell_insert(int i) {
+    auto& h = hood_[std::size_t(i)];
+    const int cx = std::clamp(int(h.anchor.x / wx_), 0, mx_ - 1);
+    const int cy = std::clamp(int(h.anchor.y / wy_), 0, my_ - 1);
+    const int c = cy * mx_ + cx;
+    if (cell_count_[std::size_t(c)] == cell_cap_) grow_cells();
+    const int k = cell_count_[std::size_t(c)]++;
+    cell_list_[std::size_t(c) * std::size_t(cell_cap_) + std::size_t(k)] = i;
+    h.cell = c;
+    h.slot = k;
+  }
+  void cell_remove(int i) {
+    const auto& h = hood_[std::size_t(i)];
+    int* list = cell_list_.data() + std::size_t(h.cell) * std::size_t(cell_cap_);
+    const int last = list[--cell_count_[std::size_t(h.cell)]];
+    list[h.slot] = last;
+    hood_[std::size_t(last)].slot = h.slot;
+  }
   void grow_cells() {
     const int cap = 2 * cell_cap_;
     std::vector<int> list(cell_count_.size() * std::size_t(cap));
@@ -326,118 +478,81 @@ class Engine {
                   list.begin() + std::ptrdiff_t(c * std::size_t(cap)));
     cell_list_.swap(list);
     cell_cap_ = cap;
-    nb_.assign(9 * std::size_t(cap), 0);
-  }
-  const int* cell_begin(int c) const {
-    return cell_list_.data() + std::size_t(c) * std::size_t(cell_cap_);
-  }
-  void insert(int i, int c) {
-    if (cell_count_[std::size_t(c)] == cell_cap_) grow_cells();
-    const int k = cell_count_[std::size_t(c)]++;
-    cell_list_[std::size_t(c) * std::size_t(cell_cap_) + std::size_t(k)] = i;
-    disks_[std::size_t(i)].cell = c;
-    disks_[std::size_t(i)].slot = k;
-  }
-  void remove(int i) {
-    auto& d = disks_[std::size_t(i)];
-    int* list = cell_list_.data() + std::size_t(d.cell) * std::size_t(cell_cap_);
-    const int last = list[--cell_count_[std::size_t(d.cell)]];
-    list[d.slot] = last;
-    disks_[std::size_t(last)].slot = d.slot;
-  }
-  void cross(int i, int code) {
-    auto& d = disks_[std::size_t(i)];
-    advance(d);
-    int cx = d.cell % mx_, cy = d.cell / mx_;
-    if (code == kCrossXPlus) ++cx;
-    if (code == kCrossXMinus) --cx;
-    if (code == kCrossYPlus) ++cy;
-    if (code == kCrossYMinus) --cy;
-    remove(i);
-    insert(i, cy * mx_ + cx);
   }
 
   // --- prediction ---
-  // Time from now until disks at relative position dx, relative velocity dv touch, both
-  // diameters D growing at g: |dx + dv t|^2 = (D + g t)^2. kInf when they never touch or not
-  // before `best` (then the square root is skipped: t >= c / (-2b) when a >= 0).
-  static double pair_time(Vec2 dx, Vec2 dv, double D, double g, double best) {
-    // The cheap rejections are combined without branches (each one alone is data-dependent and
-    // unpredictable); only pairs that may beat `best` take the branch to the square root.
-    const double b = dot(dx, dv) - g * D;
-    const double a = dot(dv, dv) - g * g;
-    const double c0 = dot(dx, dx) - D * D;
-    // c <= 0: touching (or rounding overlap); with b < 0 the root below is exactly 0 (now).
-    const double c = c0 > 0 ? c0 : 0;
-    const bool grows_slower = a >= 0;
-    const bool never = (grows_slower & (b >= 0)) | (grows_slower & (c >= -2 * b * best));
-    if (never) return kInf;
-    const double disc = b * b - a * c;
-    if (disc < 0) return kInf;
-    if (b < 0) return c / (-b + std::sqrt(disc));  // no cancellation
-    return (b + std::sqrt(disc)) / -a;             // a < 0: growth outruns separation
+  // Time from now until a disk at p (relative to its anchor), velocity v, whose radius grows at
+  // h, leaves its neighbourhood: |p + v t| = s - h t with s = neighbourhood radius - disk radius.
+  // The positive root of (v^2 - h^2) t^2 + 2 (p.v + s h) t + (p^2 - s^2) = 0, cancellation-free;
+  // never later than s / h, when the disk fills the neighbourhood.
+  static double exit_time(Vec2 p, Vec2 v, double s, double h) {
+    if (s <= 0) return 0;
+    const double a = dot(v, v) - h * h, b = dot(p, v) + s * h;
+    const double c = std::min(dot(p, p) - s * s, 0.0);
+    const double disc = std::max(b * b - a * c, 0.0);
+    double t = kInf;
+    if (b >= 0) {
+      const double q = b + std::sqrt(disc);
+      t = q > 0 ? -c / q : 0;
+    } else if (a > 0) {
+      t = (-b + std::sqrt(disc)) / a;
+    }
+    return h > 0 ? std::min(t, s / h) : t;
+  }
+
+  // Is the disk still inside its neighbourhood at time t (see exit_time)?
+  static bool inside_at(Vec2 p, Vec2 v, double s, double h, double t) {
+    const Vec2 q = p + v * t;
+    const double room = s - h * t;
+    return room > 0 && dot(q, q) < room * room;
   }
 
   void predict(int i) {
-    auto& di = disks_[std::size_t(i)];
-    if (is_pinned(i)) return;
+    const auto& di = disks_[std::size_t(i)];
+    const auto& hi = hood_[std::size_t(i)];
     const Vec2 xi = position(di);
     const double D = diameter(now_), g = rate();
     double best = kInf;
     int partner = kNoEvent;
-    for (Side side : kSides) {
-      const double w = std::max(wall_distance(xi, side, 1.0) - D / 2, 0.0);
-      const double denom = g / 2 - dot(di.v, wall_normal<double>(side));
-      if (denom > 0 && w < best * denom) {
-        best = w / denom;
-        partner = -1 - int(side);
+    if (!is_pinned(i)) {  // pinned disks only need their updates; the others predict against them
+      for (Side side : kSides) {
+        if (!(hi.walls >> unsigned(side) & 1u)) continue;
+        const double w = std::max(wall_distance(xi, side, 1.0) - D / 2, 0.0);
+        const double denom = g / 2 - dot(di.v, wall_normal<double>(side));
+        if (denom > 0 && w < best * denom) {
+          best = w / denom;
+          partner = -1 - int(side);
+        }
       }
+      const Vec2 vi = di.v;
+      const double now = now_;
+      const int* list = neighbours(i);
+      const int count = nbr_count_[std::size_t(i)];
+      double *px = batch_.data(), *py = px + nbr_cap_, *ux = py + nbr_cap_, *uy = ux + nbr_cap_,
+             *t = uy + nbr_cap_;
+      for (int k = 0; k < count; ++k) {
+        const auto& dj = disks_[std::size_t(list[k])];
+        const Vec2 dx = dj.x + dj.v * (now - dj.t) - xi, dv = dj.v - vi;
+        px[k] = dx.x, py[k] = dx.y, ux[k] = dv.x, uy[k] = dv.y;
+      }
+      pair_times((count + 3) & ~3, px, py, ux, uy, D, g, t);
+      int arg = -1;  // selected, not branched to (the winner is unpredictable)
+      for (int k = 0; k < count; ++k) {
+        const bool earlier = t[k] < best;
+        best = earlier ? t[k] : best;
+        arg = earlier ? k : arg;
+      }
+      if (arg >= 0) partner = list[arg];
     }
-    const int cx = di.cell % mx_, cy = di.cell / mx_;
-    {  // leaving the cell
-      const double lo_x = cx * wx_, lo_y = cy * wy_;
-      if (di.v.x > 0 && cx < mx_ - 1) {
-        const double t = std::max((lo_x + wx_ - xi.x) / di.v.x, 0.0);
-        if (t < best) best = t, partner = kCrossXPlus;
-      } else if (di.v.x < 0 && cx > 0) {
-        const double t = std::max((lo_x - xi.x) / di.v.x, 0.0);
-        if (t < best) best = t, partner = kCrossXMinus;
-      }
-      if (di.v.y > 0 && cy < my_ - 1) {
-        const double t = std::max((lo_y + wy_ - xi.y) / di.v.y, 0.0);
-        if (t < best) best = t, partner = kCrossYPlus;
-      } else if (di.v.y < 0 && cy > 0) {
-        const double t = std::max((lo_y - xi.y) / di.v.y, 0.0);
-        if (t < best) best = t, partner = kCrossYMinus;
-      }
+    // The update comes first only if the disk is out of its neighbourhood at `best`: the times it
+    // is inside, |p + v t| + h t <= s, form an interval from 0 (a convex function of t), so
+    // inside at `best` means inside until then. Most predictions skip the root this way.
+    const Vec2 p = xi - hi.anchor;
+    const double s = hi.radius - D / 2, h = g / 2;
+    if (!(best < kInf) || !inside_at(p, di.v, s, h, best)) {
+      const double t = exit_time(p, di.v, s, h);
+      if (t <= best) best = t, partner = kUpdate;
     }
-    // Gather the neighbours (same order as a cell-by-cell scan) into one list first.
-    int* nb = nb_.data();
-    int m = 0, own = 0;  // own: i's place in the list
-    const int x0 = std::max(cx - 1, 0), x1 = std::min(cx + 1, mx_ - 1);
-    for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, my_ - 1); ++y)
-      for (int x = x0; x <= x1; ++x) {
-        const int c = y * mx_ + x;
-        const int count = cell_count_[std::size_t(c)];
-        if (count <= 8) [[likely]]
-          std::memcpy(nb + m, cell_begin(c), 8 * sizeof(int));
-        else
-          std::memcpy(nb + m, cell_begin(c), std::size_t(count) * sizeof(int));
-        if (c == di.cell) own = m + di.slot;
-        m += count;
-      }
-    const Vec2 vi = di.v;
-    const double now = now_;
-    auto scan = [&](int k0, int k1) {
-      for (int k = k0; k < k1; ++k) {
-        const int j = nb[k];
-        const auto& dj = disks_[std::size_t(j)];
-        const double t = pair_time(dj.x + dj.v * (now - dj.t) - xi, dj.v - vi, D, g, best);
-        if (t < best) best = t, partner = j;
-      }
-    };
-    scan(0, own);
-    scan(own + 1, m);
     if (partner == kNoEvent) return heap_.erase(i);
     heap_.set({now_ + best, i, partner, partner >= 0 ? traj_[std::size_t(partner)] : 0});
   }
@@ -507,8 +622,10 @@ class Engine {
 
   // --- bookkeeping ---
   // Bring every disk to now and restart the clock at 0 (event times stay small, so collisions
-  // 1e-14 apart near jamming are still resolved).
-  void sync() {
+  // 1e-14 apart near jamming are still resolved). True when the neighbourhoods were rebuilt (the
+  // predictions must be redone).
+  bool sync() {
+    heap_.shift(now_);
     for (auto& d : disks_) {
       advance(d);
       d.t = 0;
@@ -517,9 +634,9 @@ class Engine {
     t_base_ += now_;
     if constexpr (kPinned) pin_limit_ -= now_;
     now_ = 0;
-    if (diam0_ > cell_size_) {  // only when the start was already larger than the cap
-      build_cells(2 * diam0_);
-    }
+    if (diam0_ <= diam_max_) return false;
+    build_neighbourhoods(2 * diam0_);  // a start beyond Oler's bound
+    return true;
   }
   void rebuild_heap() {
     heap_.reset(n_);
@@ -532,21 +649,19 @@ class Engine {
     for (auto& d : disks_) d.v = d.v * s;
     for (auto& t : traj_) ++t;
   }
-  // Largest overlap (relative to the diameter) among pairs and walls, positions at now.
+  // Largest overlap (relative to the diameter) among pairs and walls, positions at now. Disks
+  // that overlap have overlapping neighbourhoods, so the neighbour lists cover every pair.
   double max_overlap() const {
     const double D = diameter(now_);
     if (D <= 0) return 0;
     double worst = 0;
     for (int i = 0; i < n_; ++i) {
-      const auto& di = disks_[std::size_t(i)];
-      const Vec2 xi = position(di);
+      const Vec2 xi = position(disks_[std::size_t(i)]);
       for (Side s : kSides) worst = std::max(worst, D / 2 - wall_distance(xi, s, 1.0));
-      const int cx = di.cell % mx_, cy = di.cell / mx_;
-      for (int y = std::max(cy - 1, 0); y <= std::min(cy + 1, my_ - 1); ++y)
-        for (int x = std::max(cx - 1, 0); x <= std::min(cx + 1, mx_ - 1); ++x)
-          for (int k = 0; k < cell_count_[std::size_t(y * mx_ + x)]; ++k)
-            if (const int j = cell_begin(y * mx_ + x)[k]; j > i)
-              worst = std::max(worst, D - norm(position(disks_[std::size_t(j)]) - xi));
+      const int* list = neighbours(i);
+      for (int k = 0; k < nbr_count_[std::size_t(i)]; ++k)
+        if (const int j = list[k]; j > i)
+          worst = std::max(worst, D - norm(position(disks_[std::size_t(j)]) - xi));
     }
     return worst / D;
   }
@@ -568,13 +683,16 @@ class Engine {
   StopRules stop_;
   int n_;
   std::vector<Disk> disks_;
+  std::vector<Neighbourhood> hood_;
   std::vector<std::uint32_t> traj_;
   std::vector<char> pinned_;
-  std::vector<int> cell_list_, cell_count_;
+  std::vector<int> cell_list_, cell_count_;  // anchors by cell
   int cell_cap_ = 8;
-  std::vector<int> nb_;  // predict's neighbour list: 9 cells of cell_cap_
+  std::vector<int> nbr_, nbr_count_;  // neighbour lists, nbr_cap_ slots per disk
+  int nbr_cap_ = 16;                  // a multiple of 4 (pair_times' padding)
+  std::vector<double> batch_;         // predict's relative positions, velocities and times
   EventQueue heap_;
-  double cell_size_ = 0, wx_ = 1, wy_ = 1;
+  double diam_max_ = 0, skin_ = 0, cell_size_ = 0, wx_ = 1, wy_ = 1;
   int mx_ = 1, my_ = 1;
   double g_ = 0, diam0_ = 0, now_ = 0, t_base_ = 0, pin_limit_ = kInf;
   std::uint64_t every_ = 0, block_ = 0;
