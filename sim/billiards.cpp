@@ -109,19 +109,30 @@ class EventQueue {
   std::vector<Event> ev_;
 };
 
-// Collision times of one disk with m neighbours at relative positions (px, py) and relative
-// velocities (ux, uy), all diameters D growing at g: |p + u t|^2 = (D + g t)^2, kInf when they
-// never touch. Branch-free, so the loop vectorises (whether a pair approaches is data-dependent,
-// and a branch on it mispredicts often): both cancellation-free forms of the root are computed
-// and one is selected. The AVX2 clone is chosen at load time where the CPU has it (no FMA: every
-// clone rounds alike). The arrays are padded to a multiple of 4; extra lanes are ignored.
+// Hot per-disk state: position and velocity at the disk's own time t (lazy update).
+struct Disk {
+  Vec2 x, v;
+  double t = 0;
+};
+
+// Collision times of disk i (position xi at `now`, velocity vi) with its m neighbours
+// disks[list[k]] (positions at their own times), all diameters D growing at g:
+// |dx + dv t|^2 = (D + g t)^2, kInf when they never touch. Branch-free, so the loop vectorises
+// (whether a pair approaches is data-dependent, and a branch on it mispredicts often): both
+// cancellation-free forms of the root are computed and one is selected. The AVX2 clone is chosen
+// at load time where the CPU has it (no FMA: every clone rounds alike). m is a multiple of 4 and
+// list[k] a valid index up to it; the extra lanes are ignored.
 __attribute__((target_clones("avx2", "default"))) void pair_times(
-    int m, const double* __restrict px, const double* __restrict py, const double* __restrict ux,
-    const double* __restrict uy, double D, double g, double* __restrict t) {
+    int m, const Disk* __restrict disks, const int* __restrict list, Vec2 xi, Vec2 vi, double now,
+    double D, double g, double* __restrict t) {
   for (int k = 0; k < m; ++k) {
-    const double b = px[k] * ux[k] + py[k] * uy[k] - g * D;
-    const double a = ux[k] * ux[k] + uy[k] * uy[k] - g * g;
-    const double c0 = px[k] * px[k] + py[k] * py[k] - D * D;
+    const Disk& dj = disks[list[k]];
+    const double px = dj.x.x + dj.v.x * (now - dj.t) - xi.x;
+    const double py = dj.x.y + dj.v.y * (now - dj.t) - xi.y;
+    const double ux = dj.v.x - vi.x, uy = dj.v.y - vi.y;
+    const double b = px * ux + py * uy - g * D;
+    const double a = ux * ux + uy * uy - g * g;
+    const double c0 = px * px + py * py - D * D;
     // c <= 0: touching (or rounding overlap); approaching, the root is then exactly 0 (now).
     const double c = std::max(c0, 0.0);
     const double disc = b * b - a * c;
@@ -137,12 +148,6 @@ __attribute__((target_clones("avx2", "default"))) void pair_times(
     t[k] = hit ? q : kInf;
   }
 }
-
-// Hot per-disk state: position and velocity at the disk's own time t (lazy update).
-struct Disk {
-  Vec2 x, v;
-  double t = 0;
-};
 
 // Each disk's neighbourhood (bounding neighbourhoods, Donev, Torquato & Stillinger 2005): a fixed
 // circle that contains the growing disk until the disk's next update event. Two disks can touch
@@ -367,7 +372,7 @@ class Engine {
     nbr_cap_ = 16;
     nbr_count_.assign(std::size_t(n_), 0);
     nbr_.assign(std::size_t(n_) * std::size_t(nbr_cap_), 0);
-    batch_.assign(5 * std::size_t(nbr_cap_), 0.0);
+    batch_.assign(std::size_t(nbr_cap_), 0.0);
     for (int i = 0; i < n_; ++i) {
       advance(disks_[std::size_t(i)]);
       set_neighbourhood(i);
@@ -446,7 +451,7 @@ class Engine {
                   list.begin() + std::ptrdiff_t(std::size_t(i) * std::size_t(cap)));
     nbr_.swap(list);
     nbr_cap_ = cap;
-    batch_.assign(5 * std::size_t(nbr_cap_), 0.0);
+    batch_.assign(std::size_t(nbr_cap_), 0.0);
   }
   // Anchor cells, stored flat: cell c holds cell_count_[c] disks at cell_list_[c * cell_cap_ ...].
   const int* cell_begin(int c) const {
@@ -528,14 +533,8 @@ class Engine {
       const double now = now_;
       const int* list = neighbours(i);
       const int count = nbr_count_[std::size_t(i)];
-      double *px = batch_.data(), *py = px + nbr_cap_, *ux = py + nbr_cap_, *uy = ux + nbr_cap_,
-             *t = uy + nbr_cap_;
-      for (int k = 0; k < count; ++k) {
-        const auto& dj = disks_[std::size_t(list[k])];
-        const Vec2 dx = dj.x + dj.v * (now - dj.t) - xi, dv = dj.v - vi;
-        px[k] = dx.x, py[k] = dx.y, ux[k] = dv.x, uy[k] = dv.y;
-      }
-      pair_times((count + 3) & ~3, px, py, ux, uy, D, g, t);
+      double* t = batch_.data();
+      pair_times((count + 3) & ~3, disks_.data(), list, xi, vi, now, D, g, t);
       int arg = -1;  // selected, not branched to (the winner is unpredictable)
       for (int k = 0; k < count; ++k) {
         const bool earlier = t[k] < best;
@@ -712,6 +711,45 @@ double diameter_cap(int n) {
   return d / (1 + std::sqrt(3.0) * d);
 }
 
+// order[k] = the scene index of the disk the engine calls k: sorted by the Z-order (Morton) key
+// of the cell of side `cell` holding its start position (ties keep the scene order).
+std::vector<int> spatial_order(const std::vector<Vec2>& x, double cell) {
+  auto spread = [](std::uint32_t v) {  // bits of v to the even bit positions
+    std::uint64_t w = v;
+    w = (w | (w << 16)) & 0x0000FFFF0000FFFFull;
+    w = (w | (w << 8)) & 0x00FF00FF00FF00FFull;
+    w = (w | (w << 4)) & 0x0F0F0F0F0F0F0F0Full;
+    w = (w | (w << 2)) & 0x3333333333333333ull;
+    w = (w | (w << 1)) & 0x5555555555555555ull;
+    return w;
+  };
+  const double inv = 1 / std::max(cell, 1e-6);
+  std::vector<std::uint64_t> key(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const auto cx = std::uint32_t(std::clamp(x[i].x * inv, 0.0, 65535.0));
+    const auto cy = std::uint32_t(std::clamp(x[i].y * inv, 0.0, 65535.0));
+    key[i] = spread(cx) | (spread(cy) << 1);
+  }
+  std::vector<int> order(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) order[i] = int(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return key[std::size_t(a)] < key[std::size_t(b)]; });
+  return order;
+}
+template <class T>
+std::vector<T> permuted(const std::vector<T>& v, const std::vector<int>& order) {
+  if (v.empty()) return v;
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[std::size_t(order[k])];
+  return out;
+}
+template <class T>
+std::vector<T> unpermuted(const std::vector<T>& v, const std::vector<int>& order) {
+  std::vector<T> out(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) out[std::size_t(order[k])] = v[k];
+  return out;
+}
+
 }  // namespace
 
 BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
@@ -753,6 +791,14 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
   if (T) s.thermostat_every = scene.thermostat->every ? scene.thermostat->every : 10 * n;
   if (!T) s.thermostat_every = std::numeric_limits<std::uint64_t>::max();
 
+  // The engine numbers disks along a Z-order curve of their start cells, so neighbours sit close
+  // in memory; everything it returns is mapped back to the scene's numbering.
+  const std::vector<int> order = spatial_order(s.x, s.diam_cap);
+  s.x = permuted(s.x, order);
+  s.v = permuted(s.v, order);
+  s.pinned = permuted(s.pinned, order);
+  const std::size_t traced = options.trace ? options.trace->size() : 0;
+
   BilliardsResult r;
   const int key = (G || options.all_policies ? 4 : 0) | (T || options.all_policies ? 2 : 0) |
                   (P || options.all_policies ? 1 : 0);
@@ -782,6 +828,14 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
       r = run_engine<true, true, true>(std::move(s), options);
       break;
   }
+  r.positions = unpermuted(r.positions, order);
+  r.velocities = unpermuted(r.velocities, order);
+  if (options.trace)
+    for (std::size_t k = traced; k < options.trace->size(); ++k) {
+      auto& e = (*options.trace)[k];
+      e.i = order[std::size_t(e.i)];
+      if (e.partner >= 0) e.partner = order[std::size_t(e.partner)];
+    }
   // Map the centres' triangle (inset by diam/2) onto the unit triangle.
   const long double diam = r.diameter, rad = diam / 2, side = 1 - kSqrt3 * diam;
   r.packing.d = d_from_diameter(diam);

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "core/io.hpp"
+#include "core/neighbours.hpp"
 
 namespace tripack {
 namespace {
@@ -135,15 +136,18 @@ void validate_scene(const Scene& s) {
       if (wall_distance(p, side, 1.0L) < -tol)
         fail("initial disk " + std::to_string(i) + " lies outside the triangle");
   }
-  for (int i = 0; i < s.n; ++i)
-    for (int j = i + 1; j < s.n; ++j) {
-      const long double r =
-          norm(s.points[static_cast<std::size_t>(i)] - s.points[static_cast<std::size_t>(j)]);
-      if (r < s.start_d * (1 - tol))
-        fail("initial disks " + std::to_string(i) + " and " + std::to_string(j) +
-             " overlap (distance " + std::to_string(static_cast<double>(r)) + " < d " +
-             std::to_string(static_cast<double>(s.start_d)) + ")");
-    }
+  // Overlaps on a cell grid (O(n)); the first pair in index order is named.
+  int bad_i = -1, bad_j = -1;
+  long double bad_r = 0;
+  for_each_pair_within(s.points, s.start_d * (1 - tol), [&](int i, int j, long double r) {
+    if (r >= s.start_d * (1 - tol)) return;
+    if (bad_i < 0 || std::make_pair(i, j) < std::make_pair(bad_i, bad_j))
+      bad_i = i, bad_j = j, bad_r = r;
+  });
+  if (bad_i >= 0)
+    fail("initial disks " + std::to_string(bad_i) + " and " + std::to_string(bad_j) +
+         " overlap (distance " + std::to_string(static_cast<double>(bad_r)) + " < d " +
+         std::to_string(static_cast<double>(s.start_d)) + ")");
 }
 
 Scene parse_scene(const std::string& text, const std::string& base_dir) {

@@ -238,10 +238,17 @@ TEST(Billiards, ThermostatHoldsTheEnergyAndCapsStop) {
   s.stop.max_events = 50'000;
   std::mt19937_64 rng(8);
   const BilliardsResult r = run_billiards(s, rng);
-  // Pumped by growth for at most 100 collisions since the last rescale.
-  EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 0.05 * r.kinetic_energy_start);
+  // Pumped by growth for at most 100 collisions since the last rescale: a collision at approach
+  // speed w leaves at 2g + w, gaining g^2 + g w (reduced mass 1/2); with g = 0.01 and mean
+  // approach speeds ~1.3 (unit rms speed) that is ~1.3 = 6.5% of E = 20 at most on average;
+  // 15% allows twice that. Without the thermostat the same run gains far more.
+  EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 0.15 * r.kinetic_energy_start);
   EXPECT_EQ(r.stop_reason, "max events");
   EXPECT_FALSE(r.jammed);
+  Scene free = s;
+  free.thermostat.reset();
+  std::mt19937_64 rng_free(8);
+  EXPECT_GT(run_billiards(free, rng_free).kinetic_energy_end, 2 * r.kinetic_energy_start);
   Scene slow = default_scene(200);
   slow.growth->rate = 1e-6;
   slow.stop.max_seconds = 0.2;
