@@ -558,8 +558,28 @@ int cmd_analyze(const AnalyzeOptions& o) {
   return 0;
 }
 
-int cmd_billiards(const BilliardsCommandOptions& o) {
+// A scene whose initial state names a built pattern: build it (as `tripack build` does, without
+// the analysis) and start from its points at its d.
+void resolve_scene_pattern(const GlobalOptions& g, Scene& scene) {
+  if (!scene.pattern) return;
+  const auto& req = *scene.pattern;
+  BuildRequest b;
+  b.class_id = req.class_name;
+  b.k = static_cast<long>(req.k);
+  b.p = req.p ? static_cast<long>(*req.p) : 0;
+  b.variant = req.variant;
+  const Pattern built = build_pattern(load_catalogue(g), b);
+  if (scene.n && scene.n != static_cast<int>(built.packing.size()))
+    throw std::invalid_argument(fmt::format("the scene has n = {} but pattern {} k={} has {} disks",
+                                            scene.n, req.class_name, req.k, built.packing.size()));
+  scene.n = static_cast<int>(built.packing.size());
+  scene.points = built.packing.points;
+  scene.start_d = built.packing.d;
+}
+
+int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   Scene scene = o.scene.empty() ? default_scene(static_cast<int>(o.n)) : load_scene(o.scene);
+  resolve_scene_pattern(g, scene);
   if (o.n && scene.n != o.n)
     throw std::invalid_argument(
         fmt::format("the scene has n = {} but {} was asked for", scene.n, o.n));
@@ -681,6 +701,10 @@ int cmd_billiards(const BilliardsCommandOptions& o) {
         x["d"] = format_significant(run.analysis->pattern.packing.d, 17);
         x["certificate"] = certificate_json(*run.analysis);
       }
+      if (scene.shake)
+        x["shake"] = {{"collisions", run.sim.shake_collisions},
+                      {"seconds", run.sim.shake_seconds},
+                      {"rattlers", run.sim.shake_rattlers}};
       if (!run.error.empty()) x["error"] = run.error;
       j["runs"].push_back(x);
     }
@@ -714,6 +738,20 @@ int cmd_billiards(const BilliardsCommandOptions& o) {
                              a ? std::to_string(a->pattern.rattlers.size()) : "-",
                              a ? (a->certified() ? "yes" : "no") : "-",
                              label_of(static_cast<int>(r)));
+  }
+  if (scene.shake) {
+    std::cout << fmt::format(
+        "shaking at fixed size ({} collisions per disk): rattlers = disks "
+        "colliding {}x less often than the median\n",
+        scene.shake->per_disk, scene.shake->rattler_factor);
+    for (const auto& run : runs)
+      if (run.error.empty())
+        std::cout << fmt::format(
+            "{:>6} shake: {} collisions in {:.3f} s, rattlers [{}]{}\n", run.seed,
+            run.sim.shake_collisions, run.sim.shake_seconds, fmt::join(run.sim.shake_rattlers, " "),
+            run.analysis ? fmt::format("; analysis rattlers [{}]",
+                                       fmt::join(run.analysis->pattern.rattlers, " "))
+                         : "");
   }
   std::cout << fmt::format("distinct packings ({} runs, {:.2f} s):\n", o.runs, wall);
   for (const auto& x : distinct)

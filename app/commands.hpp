@@ -61,6 +61,6 @@ struct BilliardsCommandOptions {
   bool json = false;
   bool certify = true;
 };
-int cmd_billiards(const BilliardsCommandOptions& o);
+int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o);
 
 }  // namespace tripack::app

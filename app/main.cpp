@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
     if (*billiards) {
       if (bl.n == 0 && bl.scene.empty())
         throw std::invalid_argument("billiards needs N or --scene FILE");
-      return cmd_billiards(bl);
+      return cmd_billiards(g, bl);
     }
   } catch (const std::exception& e) {
     std::cerr << "tripack: error: " << e.what() << "\n";

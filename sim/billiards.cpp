@@ -166,6 +166,7 @@ struct Setup {
   std::vector<Vec2> x, v;
   std::vector<char> pinned;
   double diam0 = 0, rate = 0, diam_cap = 0;
+  std::vector<GrowthStep> schedule;  // by decreasing gap
   std::uint64_t thermostat_every = 0;
   StopRules stop;
 };
@@ -175,13 +176,19 @@ struct Setup {
 // larger skin means fewer updates at low density (bench_billiards measured 0.1 .. 0.3).
 constexpr double kSkin = 0.2;
 
-// kGrowth, kThermostat, kPinned: which effects are compiled in. Absent effects are constant-folded
-// away (rate 0, no rescaling, no pinned tests on the hot path).
-template <bool kGrowth, bool kThermostat, bool kPinned>
+// kGrowth, kThermostat, kPinned, kTrack (shaking: each disk's path extent): which effects are
+// compiled in. Absent effects are constant-folded away (rate 0, no rescaling, no pinned tests,
+// no extent updates on the hot path).
+template <bool kGrowth, bool kThermostat, bool kPinned, bool kTrack = false>
 class Engine {
  public:
   Engine(Setup s, const BilliardsOptions& o) : opt_(o), stop_(s.stop), n_(int(s.x.size())) {
-    if constexpr (kGrowth) g_ = s.rate;
+    if constexpr (kGrowth) g_ = base_rate_ = s.rate;
+    if constexpr (kGrowth) schedule_ = s.schedule;
+    if constexpr (kTrack) {
+      lo_ = hi_ = s.x;
+      hits_.assign(std::size_t(n_), 0);
+    }
     if constexpr (kThermostat) every_ = s.thermostat_every;
     if constexpr (kPinned) pinned_ = s.pinned;
     diam0_ = s.diam0;
@@ -274,6 +281,7 @@ class Engine {
       if (since_sync >= block_ || rescale) {
         block_time_ += now_;
         const bool rebuilt = sync();
+        bool new_rate = false;
         if constexpr (kGrowth) {
           if (since_sync >= block_) {
             const double d = diameter(0);
@@ -298,6 +306,16 @@ class Engine {
             block_time_ = 0;
             since_sync = 0;
             block_energy_ = -1;
+            // Growth schedule: the rate of the last step whose gap the estimate is below. The
+            // clock was just restarted (diameter = diam0 + g t from t = 0), so g may change here.
+            double want = base_rate_;
+            for (const auto& step : schedule_)
+              if (gap_ < step.gap) want = step.rate;
+            if (want != g_) {
+              g_ = want;
+              new_rate = true;
+              if constexpr (kPinned) pin_limit_ = pinned_limit();
+            }
           }
         } else {
           since_sync = 0;
@@ -307,7 +325,7 @@ class Engine {
           since_rescale = 0;
         }
         if (block_energy_ < 0) block_energy_ = 2 * kinetic_energy();
-        if (rescale || rebuilt) rebuild_heap();  // else the shifted predictions still hold
+        if (rescale || rebuilt || new_rate) rebuild_heap();  // else the shifted ones still hold
       }
     }
     sync();
@@ -316,6 +334,15 @@ class Engine {
     r.diameter = diameter(0);
     r.relative_gap = gap_;
     r.kinetic_energy_end = kinetic_energy();
+    r.growth_rate = rate();
+    if constexpr (kTrack) {
+      const double D = diameter(0);
+      for (int i = 0; i < n_; ++i) {
+        const Vec2 e = hi_[std::size_t(i)] - lo_[std::size_t(i)];
+        r.excursion.push_back(D > 0 ? std::max(e.x, e.y) / D : 0.0);
+      }
+      r.shake_hits = hits_;
+    }
     r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     for (const auto& d : disks_) {
       r.positions.push_back(d.x);
@@ -347,6 +374,11 @@ class Engine {
   void advance(Disk& d) {
     d.x += d.v * (now_ - d.t);
     d.t = now_;
+    if constexpr (kTrack) {  // paths are straight between events: their extremes are at events
+      const auto i = std::size_t(&d - disks_.data());
+      lo_[i] = {std::min(lo_[i].x, d.x.x), std::min(lo_[i].y, d.x.y)};
+      hi_[i] = {std::max(hi_[i].x, d.x.x), std::max(hi_[i].y, d.x.y)};
+    }
   }
   double kinetic_energy() const {
     double e = 0;
@@ -596,6 +628,7 @@ class Engine {
     }
     ++traj_[std::size_t(i)];
     ++traj_[std::size_t(j)];
+    if constexpr (kTrack) ++hits_[std::size_t(i)], ++hits_[std::size_t(j)];
   }
   void bounce(int i, Side side) {
     auto& d = disks_[std::size_t(i)];
@@ -612,6 +645,7 @@ class Engine {
       virial_ += diameter(now_) * (target - vn);
     }
     ++traj_[std::size_t(i)];
+    if constexpr (kTrack) ++hits_[std::size_t(i)];
   }
   void record(BilliardsResult&, int i, int j) {
     if (!opt_.trace) return;
@@ -693,14 +727,18 @@ class Engine {
   EventQueue heap_;
   double diam_max_ = 0, skin_ = 0, cell_size_ = 0, wx_ = 1, wy_ = 1;
   int mx_ = 1, my_ = 1;
+  std::vector<Vec2> lo_, hi_;        // path extents (kTrack)
+  std::vector<std::uint64_t> hits_;  // collisions per disk (kTrack)
+  std::vector<GrowthStep> schedule_;
+  double base_rate_ = 0;
   double g_ = 0, diam0_ = 0, now_ = 0, t_base_ = 0, pin_limit_ = kInf;
   std::uint64_t every_ = 0, block_ = 0;
   double virial_ = 0, block_time_ = 0, gap_ = 1, energy_target_ = 0, block_energy_ = 0;
 };
 
-template <bool G, bool T, bool P>
+template <bool G, bool T, bool P, bool S = false>
 BilliardsResult run_engine(Setup s, const BilliardsOptions& o) {
-  return Engine<G, T, P>(std::move(s), o).run();
+  return Engine<G, T, P, S>(std::move(s), o).run();
 }
 
 // Upper bound of the container diameter from Oler's bound (d <= 1/t(n)); the cell size.
@@ -709,6 +747,39 @@ double diameter_cap(int n) {
   const double t = (-3 + std::sqrt(8.0 * n + 1)) / 2;
   const double d = std::min(1.0, 1 / t);
   return d / (1 + std::sqrt(3.0) * d);
+}
+
+// Shaking at fixed size: an elastic run from the state in r (engine numbering) for per_disk * n
+// collisions with fresh random unit velocities, recording each disk's path extent in
+// r.excursion. The state in r is left as it was (shaking is a diagnostic).
+void shake(BilliardsResult& r, const ShakeEffect& fx, const std::vector<char>& pinned,
+           double diam_cap, std::mt19937_64& rng, const BilliardsOptions& options) {
+  Setup s;
+  const std::size_t n = r.positions.size();
+  s.x = r.positions;
+  s.pinned = pinned;
+  s.diam0 = double(r.diameter);
+  s.diam_cap = std::max(diam_cap, s.diam0);
+  std::uniform_real_distribution<double> u01(0, 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phi = 2 * M_PI * u01(rng);
+    s.v.push_back({std::cos(phi), std::sin(phi)});
+  }
+  s.thermostat_every = std::numeric_limits<std::uint64_t>::max();
+  s.stop.max_collisions = fx.per_disk * n;
+  s.stop.max_seconds = r.seconds > 0 ? std::max(60.0, 10 * r.seconds) : 600;
+  BilliardsOptions o = options;
+  o.trace = nullptr;  // the trace is the main phase's
+  o.all_policies = false;
+  const bool any_pinned = std::find(pinned.begin(), pinned.end(), 1) != pinned.end();
+  const BilliardsResult shaken = any_pinned
+                                     ? run_engine<false, false, true, true>(std::move(s), o)
+                                     : run_engine<false, false, false, true>(std::move(s), o);
+  r.excursion = shaken.excursion;
+  r.shake_hits = shaken.shake_hits;
+  r.shake_collisions = shaken.collisions;
+  r.shake_seconds = shaken.seconds;
+  r.max_overlap = std::max(r.max_overlap, shaken.max_overlap);
 }
 
 // order[k] = the scene index of the disk the engine calls k: sorted by the Z-order (Morton) key
@@ -788,6 +859,7 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
   const bool T = scene.thermostat.has_value();
   const bool P = !scene.pinned.empty();
   if (G) s.rate = scene.growth->rate;
+  if (G) s.schedule = scene.growth->schedule;
   if (T) s.thermostat_every = scene.thermostat->every ? scene.thermostat->every : 10 * n;
   if (!T) s.thermostat_every = std::numeric_limits<std::uint64_t>::max();
 
@@ -798,11 +870,22 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
   s.v = permuted(s.v, order);
   s.pinned = permuted(s.pinned, order);
   const std::size_t traced = options.trace ? options.trace->size() : 0;
+  const std::vector<char> pinned = s.pinned;
+  const double diam_cap = s.diam_cap;
 
   BilliardsResult r;
+  const bool main_phase = G || !scene.shake;  // without growth, a shaking scene only shakes
+  if (!main_phase) {
+    r.positions = s.x;
+    r.velocities = s.v;
+    r.diameter = s.diam0;
+    r.stop_reason = "shake only";
+  }
   const int key = (G || options.all_policies ? 4 : 0) | (T || options.all_policies ? 2 : 0) |
                   (P || options.all_policies ? 1 : 0);
-  switch (key) {
+  switch (main_phase ? key : -1) {
+    case -1:
+      break;
     case 0:
       r = run_engine<false, false, false>(std::move(s), options);
       break;
@@ -828,8 +911,23 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
       r = run_engine<true, true, true>(std::move(s), options);
       break;
   }
+  if (scene.shake) shake(r, *scene.shake, pinned, diam_cap, rng, options);
   r.positions = unpermuted(r.positions, order);
   r.velocities = unpermuted(r.velocities, order);
+  if (scene.shake) {
+    r.excursion = unpermuted(r.excursion, order);
+    r.shake_hits = unpermuted(r.shake_hits, order);
+    // Rattlers collide far less often than the median disk: a jammed disk bounces across the
+    // remaining gap, a rattler across its cage.
+    std::vector<std::uint64_t> sorted = r.shake_hits;
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2),
+                     sorted.end());
+    const double median = double(sorted[sorted.size() / 2]);
+    for (int i = 0; i < n; ++i)
+      if (double(r.shake_hits[std::size_t(i)]) * scene.shake->rattler_factor < median &&
+          !(std::find(scene.pinned.begin(), scene.pinned.end(), i) != scene.pinned.end()))
+        r.shake_rattlers.push_back(i);
+  }
   if (options.trace)
     for (std::size_t k = traced; k < options.trace->size(); ++k) {
       auto& e = (*options.trace)[k];

@@ -66,6 +66,16 @@ struct BilliardsResult {
   double max_overlap = 0;   // largest overlap seen, relative to the diameter
   double kinetic_energy_start = 0, kinetic_energy_end = 0;  // sum v^2 / 2
   std::vector<Vec2> positions, velocities;                  // final state, container units
+  double growth_rate = 0;  // at the end (a growth schedule changes it)
+  // Shaking (scene effect `shake`; empty otherwise), per disk: its collisions during the shake,
+  // its path extent relative to the diameter, and the rattlers: the disks that collide more than
+  // rattler_factor times less often than the median disk. The positions above are the state
+  // before shaking.
+  std::vector<std::uint64_t> shake_hits;
+  std::vector<double> excursion;
+  std::vector<int> shake_rattlers;
+  std::uint64_t shake_collisions = 0;
+  double shake_seconds = 0;
 };
 
 BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 
@@ -45,10 +46,13 @@ std::uint64_t count(const YAML::Node& node, const std::string& name) {
   return static_cast<std::uint64_t>(v);
 }
 
+// Smallest distance among points in the unit triangle: no packing of n >= 2 beats Oler's bound
+// d <= 1 / t(n) (and no two points are farther apart than 1), so pairs beyond it are not looked at.
 long double min_distance(const std::vector<Vec2L>& p) {
+  const long double t = oler_bound(static_cast<long long>(p.size()));
+  const long double reach = (t > 1 ? 1 / t : 1.0L) * (1 + 1e-9L) + 1e-30L;
   long double best = INFINITY;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) best = std::min(best, norm(p[i] - p[j]));
+  for_each_pair_within(p, reach, [&](int, int, long double r) { best = std::min(best, r); });
   return best;
 }
 
@@ -60,6 +64,17 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
     if (v == "random") return;
     file = v;
   } else {
+    if (node["pattern"]) {  // a built pattern: resolved by the caller
+      check_keys(node, {"pattern", "k", "p", "variant"}, "initial");
+      PatternRequest req;
+      req.class_name = node["pattern"].as<std::string>();
+      if (!node["k"]) fail("initial.pattern needs k");
+      req.k = scalar<long long>(node["k"], "initial.k");
+      if (node["p"]) req.p = scalar<long long>(node["p"], "initial.p");
+      if (node["variant"]) req.variant = node["variant"].as<std::string>();
+      s.pattern = req;
+      return;
+    }
     check_keys(node, {"file", "points", "d"}, "initial");
     if (node["file"] && node["points"]) fail("initial: give either file or points");
     if (node["file"]) file = node["file"].as<std::string>();
@@ -105,13 +120,15 @@ Scene scene_from_packing(const Packing& packing, std::optional<double> growth_ra
   s.points = packing.points;
   s.start_d = packing.d;
   if (growth_rate) {
-    s.growth = GrowthEffect{*growth_rate};
+    s.growth = GrowthEffect{*growth_rate, {}};
     s.thermostat = ThermostatEffect{};
   }
   return s;
 }
 
 void validate_scene(const Scene& s) {
+  if (s.pattern && s.points.empty())
+    fail("initial pattern " + s.pattern->class_name + " has not been built");
   if (s.n < 1) fail("n must be at least 1 (got " + std::to_string(s.n) + ")");
   if (!s.points.empty() && static_cast<int>(s.points.size()) != s.n)
     fail("n = " + std::to_string(s.n) + " but the initial state has " +
@@ -120,6 +137,15 @@ void validate_scene(const Scene& s) {
     fail("velocities must have n entries");
   if (s.growth && !(s.growth->rate >= 0 && std::isfinite(s.growth->rate)))
     fail("growth rate must be finite and >= 0");
+  if (s.growth)
+    for (const auto& st : s.growth->schedule) {
+      if (!(st.gap > 0 && st.gap < 1)) fail("growth.schedule gap must be in (0, 1)");
+      if (!(st.rate > 0 && std::isfinite(st.rate)))
+        fail("growth.schedule rate must be finite and > 0");
+    }
+  if (s.shake && s.shake->per_disk == 0) fail("shake.per_disk must be at least 1");
+  if (s.shake && !(s.shake->rattler_factor > 1 && std::isfinite(s.shake->rattler_factor)))
+    fail("shake.rattler_factor must be finite and > 1");
   const auto& st = s.stop;
   if (!(st.relative_gap > 0 && st.relative_gap < 1)) fail("stop.relative_gap must be in (0, 1)");
   if (!(st.max_seconds > 0)) fail("stop.max_seconds must be > 0");
@@ -168,15 +194,45 @@ Scene parse_scene(const std::string& text, const std::string& base_dir) {
       s.n = scalar<int>(root["n"], "n");
     else if (!s.points.empty())
       s.n = static_cast<int>(s.points.size());
-    else
+    else if (!s.pattern)
       fail("n is missing");
     if (const auto fx = root["effects"]; fx && !fx.IsNull()) {
-      check_keys(fx, {"growth", "thermostat", "pinned", "stop"}, "effects");
+      check_keys(fx, {"growth", "thermostat", "shake", "pinned", "stop"}, "effects");
       if (const auto g = fx["growth"]) {
         s.growth = GrowthEffect{};
         if (!g.IsNull()) {
-          check_keys(g, {"rate"}, "effects.growth");
+          check_keys(g, {"rate", "schedule"}, "effects.growth");
           if (g["rate"]) s.growth->rate = scalar<double>(g["rate"], "growth.rate");
+          if (const auto sch = g["schedule"]) {
+            if (!sch.IsSequence()) fail("growth.schedule must be a list of {pressure|gap, rate}");
+            for (const auto& step : sch) {
+              check_keys(step, {"pressure", "gap", "rate"}, "a growth.schedule step");
+              if (!step["rate"] || (!step["pressure"] == !step["gap"]))
+                fail("a growth.schedule step needs rate and one of pressure or gap");
+              GrowthStep st;
+              st.rate = scalar<double>(step["rate"], "growth.schedule rate");
+              if (step["gap"]) {
+                st.gap = scalar<double>(step["gap"], "growth.schedule gap");
+              } else {
+                const double p = scalar<double>(step["pressure"], "growth.schedule pressure");
+                if (!(p > 2 && std::isfinite(p))) fail("growth.schedule pressure must be > 2");
+                st.gap = 2 / p;  // free-volume estimate: 1 - D/D_jam = 2 / p
+              }
+              s.growth->schedule.push_back(st);
+            }
+            std::stable_sort(
+                s.growth->schedule.begin(), s.growth->schedule.end(),
+                [](const GrowthStep& a, const GrowthStep& b) { return a.gap > b.gap; });
+          }
+        }
+      }
+      if (const auto sh = fx["shake"]) {
+        s.shake = ShakeEffect{};
+        if (!sh.IsNull()) {
+          check_keys(sh, {"per_disk", "rattler_factor"}, "effects.shake");
+          if (sh["per_disk"]) s.shake->per_disk = count(sh["per_disk"], "shake.per_disk");
+          if (sh["rattler_factor"])
+            s.shake->rattler_factor = scalar<double>(sh["rattler_factor"], "shake.rattler_factor");
         }
       }
       if (const auto t = fx["thermostat"]) {
@@ -205,7 +261,7 @@ Scene parse_scene(const std::string& text, const std::string& base_dir) {
   } catch (const YAML::Exception& e) {
     fail("bad scene at line " + std::to_string(e.mark.line + 1));
   }
-  validate_scene(s);
+  if (!s.pattern) validate_scene(s);  // else once the caller has built the points
   return s;
 }
 

@@ -6,10 +6,19 @@
 //   n: 22
 //   initial: random                 # or a file path, or {file: PATH, d: D}, or {points: [[x, y],
 //   ...], d: D} effects:
-//     growth: {rate: 0.01}          # disk diameter grows by `rate` per unit time (speeds ~1)
+//     growth:                       # disk diameter grows by `rate` per unit time (speeds ~1)
+//       rate: 0.01
+//       schedule:                   # optional: a new rate once the reduced pressure p exceeds
+//         - {pressure: 1e4, rate: 0.005}  # a threshold (or the gap estimate 2/p falls below
+//         - {gap: 1e-8, rate: 0.001}      # `gap`); checked every 20 n events
 //     thermostat: {every: 220}      # rescale the kinetic energy every `every` collisions
+//     shake: {per_disk: 200}        # then (or, without growth, only) shake at fixed size for
+//                                   # per_disk * n collisions: each disk's excursion; rattlers
 //     pinned: [0, 5]                # these disks never move
 //     stop: {relative_gap: 1e-12, max_events: 1e9, max_seconds: 600}
+// `initial: {pattern: CLASS, k: K, p: P, variant: V}` names a built pattern; sim/ cannot build
+// it (constructors/ sits above), so the scene keeps the request and the caller fills the points
+// (app/: resolve_pattern) before validate_scene.
 // Points of a file or of `points` follow the Packing convention: centres in the unit triangle with
 // minimum distance d (the default d is the points' own minimum distance, so they may touch).
 #pragma once
@@ -23,8 +32,31 @@
 
 namespace tripack {
 
+// A change of growth rate once the estimated relative gap to jamming (2 / reduced pressure)
+// falls below `gap`.
+struct GrowthStep {
+  double gap = 0;
+  double rate = 0;
+};
 struct GrowthEffect {
-  double rate = 0.01;  // diameter per unit time, in the unit (container) triangle
+  double rate = 0.01;                // diameter per unit time, in the unit (container) triangle
+  std::vector<GrowthStep> schedule;  // by decreasing gap
+};
+// Shaking at fixed size: an elastic run of per_disk * n collisions from the end state (fresh
+// random unit velocities), counting each disk's collisions and path extent. A disk that collides
+// more than rattler_factor times less often than the median disk is a rattler: a jammed disk
+// bounces across the remaining gap, a rattler across its cage (for a cage c and a gap g, at
+// cage-to-gap ratio c / g; a cage no wider than rattler_factor gaps is not told apart).
+struct ShakeEffect {
+  std::uint64_t per_disk = 200;
+  double rattler_factor = 20;
+};
+// A built pattern as the start; filled in by the caller (see above).
+struct PatternRequest {
+  std::string class_name;
+  long long k = 0;
+  std::optional<long long> p;
+  std::string variant;
 };
 struct ThermostatEffect {
   std::uint64_t every = 0;  // collisions between rescalings; 0: 10 n
@@ -44,8 +76,10 @@ struct Scene {
   long double start_d = 0;
   // Optional initial velocities (container units); empty: random unit speeds.
   std::vector<Vec2> velocities;
+  std::optional<PatternRequest> pattern;  // points still to be built (see above)
   std::optional<GrowthEffect> growth;
   std::optional<ThermostatEffect> thermostat;
+  std::optional<ShakeEffect> shake;
   std::vector<int> pinned;
   StopRules stop;
 };

@@ -112,6 +112,15 @@ expect_error "billiards: overlapping initial points" "scene" billiards --scene "
 expect_error "billiards: n < 1" "N" billiards 0
 expect_error "billiards: missing scene file" "scene" billiards --scene "$DATA/scenes/none.yaml"
 expect_error "billiards: scene n differs" "n = 7" billiards 8 --scene "$DATA/scenes/t7.yaml"
+expect_error "billiards: unknown pattern class" "nosuch" billiards --scene "$DATA/scenes/bad_pattern.yaml"
+expect_error "billiards: pattern size differs" "pattern matrix" billiards --scene "$DATA/scenes/pattern_n.yaml"
+# The shipped scenes: shaking the built t22a (matrix p=3 k=1) names its 2 rattlers, the same two
+# the analysis finds (GL1995 Fig.t22: 47 bonds, 2 rattlers).
+SCENES="$DATA/../../scenes"
+expect_output "scene t22a-shake" "rattlers 2  certified" billiards --scene "$SCENES/t22a-shake.yaml" --runs 1
+expect_output "scene t22a-shake rattlers agree" "rattlers [8 13]; analysis rattlers [8 13]" billiards --scene "$SCENES/t22a-shake.yaml" --runs 1
+expect_output "scene t22-schedule" "t22a" billiards --scene "$SCENES/t22-schedule.yaml" --runs 20 --threads 2
+expect_output "scene default" "t22a" billiards --scene "$SCENES/default.yaml" --runs 20 --threads 2
 # A scene file runs; t7a has d = 1/(1+sqrt3) = 0.366025403784439 (GL1995 Fig.t7).
 expect_output "billiards scene t7" "0.366025403784439" billiards --scene "$DATA/scenes/t7.yaml" --runs 10
 

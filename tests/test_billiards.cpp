@@ -1,6 +1,7 @@
 // sim/: the Lubachevsky–Stillinger billiards engine and its scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -112,7 +113,7 @@ TEST(Billiards, TwoDisksCollideAtThePredictedTime) {
   for (double g : {0.0, 0.05}) {
     const double diam = 0.1;
     Scene s = container_scene({{0.3, 0.3}, {0.7, 0.3}}, {{1, 0}, {-1, 0}}, diam);
-    if (g > 0) s.growth = GrowthEffect{g};
+    if (g > 0) s.growth = GrowthEffect{g, {}};
     s.stop.max_collisions = 1;  // the first collision (updates are events too)
     const std::vector<BilliardsEvent> trace = traced_run(s);
     ASSERT_EQ(trace.size(), 1u);
@@ -125,7 +126,7 @@ TEST(Billiards, TwoDisksCollideAtThePredictedTime) {
     const Vec2 x1{0.3, 0.2}, x2{0.62, 0.31}, v1{0.9, 0.1}, v2{-0.7, -0.2};
     const double diam = 0.08;
     Scene s = container_scene({x1, x2}, {v1, v2}, diam);
-    if (g > 0) s.growth = GrowthEffect{g};
+    if (g > 0) s.growth = GrowthEffect{g, {}};
     s.stop.max_collisions = 1;  // the first collision (updates are events too)
     const std::vector<BilliardsEvent> trace = traced_run(s);
     const long double dx = 0.32L, dy = 0.11L, vx = -1.6L, vy = -0.3L;
@@ -301,6 +302,81 @@ effects:
   EXPECT_TRUE(plain.points.empty());
 }
 
+TEST(Billiards, SceneParsesScheduleShakeAndPattern) {
+  const Scene s = parse_scene(R"(
+n: 30
+effects:
+  growth:
+    rate: 0.01
+    schedule: [{gap: 1e-8, rate: 0.001}, {pressure: 1e3, rate: 0.005}]
+  shake: {per_disk: 300, rattler_factor: 50}
+)");
+  ASSERT_TRUE(s.growth && s.shake);
+  ASSERT_EQ(s.growth->schedule.size(), 2u);
+  EXPECT_EQ(s.growth->schedule[0].gap, 2 / 1e3);  // pressure p is the gap 2 / p, sorted first
+  EXPECT_EQ(s.growth->schedule[0].rate, 0.005);
+  EXPECT_EQ(s.growth->schedule[1].gap, 1e-8);
+  EXPECT_EQ(s.shake->per_disk, 300u);
+  EXPECT_EQ(s.shake->rattler_factor, 50.0);
+  const Scene pat = parse_scene("initial: {pattern: matrix, p: 3, k: 1}\neffects: {shake: {}}");
+  ASSERT_TRUE(pat.pattern);
+  EXPECT_EQ(pat.pattern->class_name, "matrix");
+  EXPECT_EQ(pat.pattern->k, 1);
+  EXPECT_EQ(pat.pattern->p, 3);
+  EXPECT_EQ(pat.shake->per_disk, 200u);  // defaults
+  // Nothing can run it until the caller has built the points.
+  EXPECT_THROW(validate_scene(pat), std::runtime_error);
+}
+
+// The schedule lowers the rate as the pressure rises, and the run still jams cleanly.
+TEST(Billiards, GrowthScheduleChangesTheRate) {
+  Scene s = default_scene(30);
+  s.growth->schedule = {{2e-3, 0.005}, {2e-6, 0.001}};
+  std::mt19937_64 rng(5);
+  const BilliardsResult r = run_billiards(s, rng);
+  expect_clean_jam(r);
+  EXPECT_EQ(r.growth_rate, 0.001);  // the last step is passed on the way to a gap of 1e-12
+  Scene never = default_scene(30);
+  never.growth->schedule = {{1e-13, 0.001}};  // below the stop gap: never reached
+  std::mt19937_64 rng2(5);
+  const BilliardsResult q = run_billiards(never, rng2);
+  expect_clean_jam(q);
+  EXPECT_EQ(q.growth_rate, 0.01);
+}
+
+// Shaking a jammed state at fixed size: the disks that hardly collide are the rattlers, and a
+// pattern's jammed disks never move farther than the remaining gap allows.
+TEST(Billiards, ShakingFindsTheRattlersOfAJam) {
+  // Jam n = 22 from random points; a disk whose nearest neighbour (or wall) is farther than the
+  // diameter by 1e-6 relative, a million times the remaining gap, can only be a rattler.
+  for (std::uint64_t seed : {1, 2, 3}) {
+    Scene s = default_scene(22);
+    s.shake = ShakeEffect{};
+    std::mt19937_64 rng(seed);
+    const BilliardsResult r = run_billiards(s, rng);
+    ASSERT_TRUE(r.jammed);
+    ASSERT_EQ(r.shake_hits.size(), 22u);
+    EXPECT_EQ(r.shake_collisions, 200u * 22u);
+    EXPECT_LE(r.max_overlap, 1e-12);
+    std::vector<int> loose;
+    const double D = static_cast<double>(r.diameter);
+    for (int i = 0; i < 22; ++i) {
+      double nearest = INFINITY;
+      for (int j = 0; j < 22; ++j)
+        if (j != i) nearest = std::min(nearest, norm(r.positions[j] - r.positions[i]));
+      for (Side side : kSides)
+        nearest = std::min(nearest, 2 * wall_distance(r.positions[i], side, 1.0));
+      if (nearest > D * (1 + 1e-6)) loose.push_back(i);
+    }
+    // A rattler may still touch one neighbour; every loose disk is a rattler.
+    for (int i : loose)
+      EXPECT_NE(std::find(r.shake_rattlers.begin(), r.shake_rattlers.end(), i),
+                r.shake_rattlers.end())
+          << "seed " << seed << " disk " << i;
+    EXPECT_LE(r.shake_rattlers.size(), 5u);  // a handful, not the jammed disks
+  }
+}
+
 TEST(Billiards, SceneFromFile) {
   const auto dir = std::filesystem::temp_directory_path() / "tripack_billiards_test";
   std::filesystem::create_directories(dir);
@@ -342,6 +418,17 @@ TEST(Billiards, BadScenesGiveOneLineErrors) {
   expect_one_line_error("n: 5\neffects: {pinned: [7]}", "pinned");
   expect_one_line_error("n: 5\neffects: {growth: {rate: -1}}", "growth");
   expect_one_line_error("n: 5\ninitial: /nonexistent/file.txt", "initial file");
+  expect_one_line_error("n: 5\neffects: {growth: {schedule: [{pressure: 1e3}]}}", "rate");
+  expect_one_line_error("n: 5\neffects: {growth: {schedule: [{pressure: 1, rate: 0.1}]}}",
+                        "pressure");
+  expect_one_line_error(
+      "n: 5\neffects: {growth: {schedule: [{pressure: 1e3, gap: 1e-3, rate: 0.1}]}}", "one of");
+  expect_one_line_error("n: 5\neffects: {growth: {schedule: [{gap: 2, rate: 0.1}]}}", "gap");
+  expect_one_line_error("n: 5\neffects: {growth: {schedule: [{gap: 0.1, rate: 0}]}}", "rate");
+  expect_one_line_error("n: 5\neffects: {shake: {per_disk: 0}}", "per_disk");
+  expect_one_line_error("n: 5\neffects: {shake: {rattler_factor: 1}}", "rattler_factor");
+  expect_one_line_error("n: 5\neffects: {shake: {wiggle: 3}}", "wiggle");
+  expect_one_line_error("initial: {pattern: matrix}", "needs k");
   Scene s = default_scene(0);
   std::mt19937_64 rng(1);
   EXPECT_THROW(run_billiards(s, rng), std::runtime_error);

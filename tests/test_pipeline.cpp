@@ -154,5 +154,31 @@ TEST(Pipeline, BilliardsFromABuiltPatternStaysInIt) {
   }
 }
 
+// Shaking at fixed size (sim/) and the analysis' geometry (relax, LP loads) name the same
+// rattlers: for billiards jams of n = 22 and 31 and for built patterns with rattlers (t22a =
+// matrix p=3 k=1 with 2; t31a81 twin cavity-2 k=3; the 4Delta(3) control has none).
+TEST(Pipeline, ShakingNamesTheRattlersTheAnalysisFinds) {
+  for (int n : {22, 31})
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+      Scene s = default_scene(n);
+      s.shake = ShakeEffect{};
+      std::mt19937_64 rng(seed);
+      const BilliardsResult r = run_billiards(s, rng);
+      const Analysis a = analyze_packing(r.packing, {});
+      EXPECT_EQ(r.shake_rattlers, a.pattern.rattlers) << "n = " << n << ", seed " << seed;
+    }
+  for (const BuildRequest& req :
+       {BuildRequest{"matrix", 1, 3, ""}, BuildRequest{"twin", 3, 0, "cavity-2"},
+        BuildRequest{"four-delta", 3, 0, ""}}) {
+    const Pattern built = build_pattern(catalogue(), req);
+    Scene s = scene_from_packing(built.packing);
+    s.shake = ShakeEffect{};
+    std::mt19937_64 rng(3);
+    const BilliardsResult r = run_billiards(s, rng);
+    EXPECT_EQ(r.shake_rattlers, built.rattlers) << req.class_id;
+    EXPECT_LE(r.max_overlap, 1e-12) << req.class_id;
+  }
+}
+
 }  // namespace
 }  // namespace tripack::app
