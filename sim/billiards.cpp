@@ -257,7 +257,8 @@ class Engine {
         relist(e.i);
         predict(e.i);
       }
-      if (opt_.check_every_event) r.max_overlap = std::max(r.max_overlap, max_overlap());
+      if (opt_.check_every_event)  // all pairs: independent of the neighbour lists it checks
+        r.max_overlap = std::max(r.max_overlap, max_overlap_all_pairs());
       if (r.events >= stop_.max_events) {
         stop("max events", false);
         break;
@@ -698,6 +699,25 @@ class Engine {
     }
     return worst / D;
   }
+  // The same over every pair (O(n^2); the test mode of check_every_event).
+  double max_overlap_all_pairs() {
+    const double D = diameter(now_);
+    if (D <= 0) return 0;
+    double worst = 0, closest2 = kInf;
+    check_x_.resize(std::size_t(n_));
+    for (int i = 0; i < n_; ++i) {
+      check_x_[std::size_t(i)] = position(disks_[std::size_t(i)]);
+      for (Side s : kSides)
+        worst = std::max(worst, D / 2 - wall_distance(check_x_[std::size_t(i)], s, 1.0));
+    }
+    for (std::size_t i = 0; i < check_x_.size(); ++i)
+      for (std::size_t j = i + 1; j < check_x_.size(); ++j) {
+        const Vec2 dx = check_x_[j] - check_x_[i];
+        closest2 = std::min(closest2, dot(dx, dx));
+      }
+    if (closest2 < kInf) worst = std::max(worst, D - std::sqrt(closest2));
+    return worst / D;
+  }
   // Pinned pairs and pinned disks on walls cannot move apart: growth must stop when they touch.
   double pinned_limit() const {
     double dmax = kInf;
@@ -727,6 +747,7 @@ class Engine {
   EventQueue heap_;
   double diam_max_ = 0, skin_ = 0, cell_size_ = 0, wx_ = 1, wy_ = 1;
   int mx_ = 1, my_ = 1;
+  std::vector<Vec2> check_x_;        // max_overlap_all_pairs' positions
   std::vector<Vec2> lo_, hi_;        // path extents (kTrack)
   std::vector<std::uint64_t> hits_;  // collisions per disk (kTrack)
   std::vector<GrowthStep> schedule_;

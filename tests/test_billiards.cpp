@@ -59,15 +59,32 @@ TEST(Billiards, ElasticGasConservesEnergyAndNeverOverlaps) {
 }
 
 TEST(Billiards, ElasticGasCheckedAfterEveryEvent) {
+  // 10^6 collisions at packing fraction ~0.8, every pair and wall checked after every event.
   Scene s = random_start(50, 3, 0.95L);
-  s.stop.max_events = 100'000;
+  s.stop.max_collisions = 1'000'000;
   BilliardsOptions o;
   o.check_every_event = true;
   std::mt19937_64 rng(4);
   const BilliardsResult r = run_billiards(s, rng, o);
-  EXPECT_EQ(r.events, 100'000u);
+  EXPECT_EQ(r.collisions, 1'000'000u);
+  EXPECT_EQ(r.positions.size(), 50u);
   EXPECT_LE(r.max_overlap, 1e-12);
   EXPECT_NEAR(r.kinetic_energy_end, r.kinetic_energy_start, 1e-12 * r.kinetic_energy_start);
+}
+
+// Growth from random points to jamming, every pair checked after every event: the neighbourhood
+// updates, the growing neighbourhoods and the clock restarts never let a pair overlap.
+TEST(Billiards, GrowthToJammingCheckedAfterEveryEvent) {
+  for (int n : {22, 100}) {
+    Scene s = default_scene(n);
+    BilliardsOptions o;
+    o.check_every_event = true;
+    std::mt19937_64 rng(6);
+    const BilliardsResult r = run_billiards(s, rng, o);
+    EXPECT_TRUE(r.jammed) << r.stop_reason;
+    EXPECT_GT(r.events, 10'000u);
+    EXPECT_LE(r.max_overlap, 1e-12) << "n = " << n;
+  }
 }
 
 // Runs a scene with seed 1 and returns every collision it processed.
