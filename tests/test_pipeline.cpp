@@ -1,7 +1,9 @@
 // app/pipeline: analyze(build) for every class, conventions and input validation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "analysis/compare.hpp"
 #include "app/pipeline.hpp"
@@ -154,19 +156,50 @@ TEST(Pipeline, BilliardsFromABuiltPatternStaysInIt) {
   }
 }
 
-// Shaking at fixed size (sim/) and the analysis' geometry (relax, LP loads) name the same
-// rattlers: for billiards jams of n = 22 and 31 and for built patterns with rattlers (t22a =
-// matrix p=3 k=1 with 2; t31a81 twin cavity-2 k=3; the 4Delta(3) control has none).
+// Shaking at fixed size (sim/) and the analysis' geometry (relax, LP loads) agree on rattlers.
+// The shake judges the run's end state, the analysis the relaxed jam, which can still catch a
+// disk the run had not (a disk with one near contact at the end of the run, held by three after
+// relax): every rattler of the analysis is a shaken rattler, and a shaken rattler that the
+// analysis holds is loose in the end state (its near contacts leave an angular gap of pi).
+// Built patterns are exact jams: there both agree exactly (t22a = matrix p=3 k=1 with 2
+// rattlers, GL1995 Fig.t22; twin cavity-2 k=3; 4Delta(3) has none).
 TEST(Pipeline, ShakingNamesTheRattlersTheAnalysisFinds) {
+  int extra = 0, total = 0;
   for (int n : {22, 31})
-    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
       Scene s = default_scene(n);
       s.shake = ShakeEffect{};
       std::mt19937_64 rng(seed);
       const BilliardsResult r = run_billiards(s, rng);
       const Analysis a = analyze_packing(r.packing, {});
-      EXPECT_EQ(r.shake_rattlers, a.pattern.rattlers) << "n = " << n << ", seed " << seed;
+      const auto& shaken = r.shake_rattlers;
+      for (int i : a.pattern.rattlers)
+        EXPECT_TRUE(std::binary_search(shaken.begin(), shaken.end(), i))
+            << "n = " << n << ", seed " << seed << ": rattler " << i << " not shaken loose";
+      const double D = static_cast<double>(r.diameter);
+      for (int i : shaken) {
+        ++total;
+        if (std::binary_search(a.pattern.rattlers.begin(), a.pattern.rattlers.end(), i)) continue;
+        ++extra;
+        // Directions to the near contacts (disks and walls within 1e-9 relative): the disk is
+        // held only if they leave no angular gap of pi or more.
+        std::vector<double> angle;
+        for (int j = 0; j < n; ++j)
+          if (const Vec2 dx = r.positions[j] - r.positions[i]; j != i && norm(dx) < D * (1 + 1e-9))
+            angle.push_back(std::atan2(dx.y, dx.x));
+        for (Side side : kSides)
+          if (2 * wall_distance(r.positions[i], side, 1.0) < D * (1 + 1e-9)) {
+            const Vec2 out = wall_normal<double>(side) * -1.0;
+            angle.push_back(std::atan2(out.y, out.x));
+          }
+        std::sort(angle.begin(), angle.end());
+        double widest = angle.empty() ? 2 * M_PI : 2 * M_PI - (angle.back() - angle.front());
+        for (std::size_t k = 1; k < angle.size(); ++k)
+          widest = std::max(widest, angle[k] - angle[k - 1]);
+        EXPECT_GE(widest, M_PI - 1e-9) << "n = " << n << ", seed " << seed << ": disk " << i;
+      }
     }
+  EXPECT_LE(extra, total / 4);  // mostly the same disks
   for (const BuildRequest& req :
        {BuildRequest{"matrix", 1, 3, ""}, BuildRequest{"twin", 3, 0, "cavity-2"},
         BuildRequest{"four-delta", 3, 0, ""}}) {
