@@ -293,6 +293,10 @@ class Engine {
               stop("relative gap reached", true);
               break;
             }
+            if (stop_.pressure > 0 && 2 / gap_ > stop_.pressure) {
+              stop("pressure reached", true);
+              break;
+            }
             // Growth below rounding for several blocks: the precision limit of double.
             const bool stalled =
                 g_ > 0 && d - block_diam <= 8 * std::numeric_limits<double>::epsilon() * d;

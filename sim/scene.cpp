@@ -148,6 +148,8 @@ void validate_scene(const Scene& s) {
     fail("shake.rattler_factor must be finite and > 1");
   const auto& st = s.stop;
   if (!(st.relative_gap > 0 && st.relative_gap < 1)) fail("stop.relative_gap must be in (0, 1)");
+  if (st.pressure != 0 && !(st.pressure > 2 && std::isfinite(st.pressure)))
+    fail("stop.pressure must be > 2 (the reduced pressure of a gas is about 2)");
   if (!(st.max_seconds > 0)) fail("stop.max_seconds must be > 0");
   if (st.max_events == 0) fail("stop.max_events must be > 0");
   for (int i : s.pinned)
@@ -247,10 +249,11 @@ Scene parse_scene(const std::string& text, const std::string& base_dir) {
         for (const auto& i : p) s.pinned.push_back(scalar<int>(i, "a pinned index"));
       }
       if (const auto st = fx["stop"]) {
-        check_keys(st, {"relative_gap", "max_events", "max_collisions", "max_seconds"},
+        check_keys(st, {"relative_gap", "pressure", "max_events", "max_collisions", "max_seconds"},
                    "effects.stop");
         if (st["relative_gap"])
           s.stop.relative_gap = scalar<double>(st["relative_gap"], "stop.relative_gap");
+        if (st["pressure"]) s.stop.pressure = scalar<double>(st["pressure"], "stop.pressure");
         if (st["max_events"]) s.stop.max_events = count(st["max_events"], "stop.max_events");
         if (st["max_collisions"])
           s.stop.max_collisions = count(st["max_collisions"], "stop.max_collisions");

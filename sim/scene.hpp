@@ -15,7 +15,7 @@
 //     shake: {per_disk: 200}        # then (or, without growth, only) shake at fixed size for
 //                                   # per_disk * n collisions: each disk's excursion; rattlers
 //     pinned: [0, 5]                # these disks never move
-//     stop: {relative_gap: 1e-12, max_events: 1e9, max_seconds: 600}
+//     stop: {relative_gap: 1e-12, pressure: 1e9, max_events: 1e9, max_seconds: 600}
 // `initial: {pattern: CLASS, k: K, p: P, variant: V}` names a built pattern; sim/ cannot build
 // it (constructors/ sits above), so the scene keeps the request and the caller fills the points
 // (app/: resolve_pattern) before validate_scene.
@@ -63,6 +63,8 @@ struct ThermostatEffect {
 };
 struct StopRules {
   double relative_gap = 1e-12;  // estimated 1 - diam / diam_jammed (growth runs only)
+  double pressure = 0;  // also stop once the reduced pressure exceeds this (0: no such rule;
+                        // the estimate is the same: relative gap = 2 / pressure)
   std::uint64_t max_events = 1'000'000'000;
   std::uint64_t max_collisions = 0;  // 0: no limit
   double max_seconds = 600;

@@ -353,6 +353,14 @@ TEST(Billiards, GrowthScheduleChangesTheRate) {
   const BilliardsResult r = run_billiards(s, rng);
   expect_clean_jam(r);
   EXPECT_EQ(r.growth_rate, 0.001);  // the last step is passed on the way to a gap of 1e-12
+  // A pressure stop rule: the same estimate, p = 2 / gap.
+  Scene pressured = default_scene(30);
+  pressured.stop.pressure = 1e4;
+  std::mt19937_64 rng3(5);
+  const BilliardsResult pr = run_billiards(pressured, rng3);
+  EXPECT_EQ(pr.stop_reason, "pressure reached");
+  EXPECT_LT(pr.relative_gap, 2 / 1e4);
+  EXPECT_GT(pr.relative_gap, 1e-7);  // stopped at the first block past it, not at 1e-12
   Scene never = default_scene(30);
   never.growth->schedule = {{1e-13, 0.001}};  // below the stop gap: never reached
   std::mt19937_64 rng2(5);
@@ -443,6 +451,7 @@ TEST(Billiards, BadScenesGiveOneLineErrors) {
   expect_one_line_error("n: 5\neffects: {growth: {schedule: [{gap: 2, rate: 0.1}]}}", "gap");
   expect_one_line_error("n: 5\neffects: {growth: {schedule: [{gap: 0.1, rate: 0}]}}", "rate");
   expect_one_line_error("n: 5\neffects: {shake: {per_disk: 0}}", "per_disk");
+  expect_one_line_error("n: 5\neffects: {stop: {pressure: 1}}", "pressure");
   expect_one_line_error("n: 5\neffects: {shake: {rattler_factor: 1}}", "rattler_factor");
   expect_one_line_error("n: 5\neffects: {shake: {wiggle: 3}}", "wiggle");
   expect_one_line_error("initial: {pattern: matrix}", "needs k");
