@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -677,6 +678,12 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
     distinct[i].label = fmt::format("t{}{}{}", scene.n, rank <= 'z' ? std::string(1, rank) : "?",
                                     shared ? std::to_string(distinct[i].bonds) : "");
   }
+  // Distinct packings sharing d and the bond count too: .1, .2, ... (as the paper's t31a81.1,
+  // t31a81.2).
+  std::map<std::string, int> uses, seen;
+  for (const auto& x : distinct) ++uses[x.label];
+  for (auto& x : distinct)
+    if (uses[x.label] > 1) x.label += fmt::format(".{}", ++seen[x.label]);
   std::vector<std::string> run_label(runs.size(), "-");
   for (std::size_t u = 0; u < usable.size(); ++u)
     for (const auto& x : distinct)

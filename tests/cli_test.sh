@@ -121,6 +121,14 @@ expect_output "scene t22a-shake" "rattlers 2  certified" billiards --scene "$SCE
 expect_output "scene t22a-shake rattlers agree" "rattlers [8 13]; analysis rattlers [8 13]" billiards --scene "$SCENES/t22a-shake.yaml" --runs 1
 expect_output "scene t22-schedule" "t22a" billiards --scene "$SCENES/t22-schedule.yaml" --runs 20 --threads 2
 expect_output "scene default" "t22a" billiards --scene "$SCENES/default.yaml" --runs 20 --threads 2
+# Every distinct packing gets its own label (equal d and bonds: .1, .2 as t31a81.1, t31a81.2).
+labels=$("$TRIPACK" billiards 22 --runs 50 --threads 2 2>/dev/null | sed -n '/^distinct packings/,$p' | awk 'NR > 1 {print $1}')
+if [ -n "$labels" ] && [ "$(sort <<<"$labels" | uniq -d)" = "" ] && grep -qx "t22a" <<<"$labels"; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: billiards labels not unique or t22a missing: $labels"
+fi
 # A scene file runs; t7a has d = 1/(1+sqrt3) = 0.366025403784439 (GL1995 Fig.t7).
 expect_output "billiards scene t7" "0.366025403784439" billiards --scene "$DATA/scenes/t7.yaml" --runs 10
 
