@@ -775,6 +775,20 @@ template <bool G, bool T, bool P, bool S = false>
 BilliardsResult run_engine(Setup s, const BilliardsOptions& o) {
   return Engine<G, T, P, S>(std::move(s), o).run();
 }
+// The engine compiled for exactly the effects a run needs (the shaking engine never grows).
+BilliardsResult run_engine_for(bool G, bool T, bool P, bool shaking, Setup s,
+                               const BilliardsOptions& o) {
+  auto pins = [&]<bool g, bool t, bool sh>() {
+    return P ? run_engine<g, t, true, sh>(std::move(s), o)
+             : run_engine<g, t, false, sh>(std::move(s), o);
+  };
+  if (shaking) return pins.template operator()<false, false, true>();
+  if (G)
+    return T ? pins.template operator()<true, true, false>()
+             : pins.template operator()<true, false, false>();
+  return T ? pins.template operator()<false, true, false>()
+           : pins.template operator()<false, false, false>();
+}
 
 // Upper bound of the container diameter from Oler's bound (d <= 1/t(n)); the cell size.
 double diameter_cap(int n) {
@@ -807,9 +821,7 @@ void shake(BilliardsResult& r, const ShakeEffect& fx, const std::vector<char>& p
   o.trace = nullptr;  // the trace is the main phase's
   o.all_policies = false;
   const bool any_pinned = std::find(pinned.begin(), pinned.end(), 1) != pinned.end();
-  const BilliardsResult shaken = any_pinned
-                                     ? run_engine<false, false, true, true>(std::move(s), o)
-                                     : run_engine<false, false, false, true>(std::move(s), o);
+  const BilliardsResult shaken = run_engine_for(false, false, any_pinned, true, std::move(s), o);
   r.excursion = shaken.excursion;
   r.shake_hits = shaken.shake_hits;
   r.shake_collisions = shaken.collisions;
@@ -916,35 +928,9 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
     r.diameter = s.diam0;
     r.stop_reason = "shake only";
   }
-  const int key = (G || options.all_policies ? 4 : 0) | (T || options.all_policies ? 2 : 0) |
-                  (P || options.all_policies ? 1 : 0);
-  switch (main_phase ? key : -1) {
-    case -1:
-      break;
-    case 0:
-      r = run_engine<false, false, false>(std::move(s), options);
-      break;
-    case 1:
-      r = run_engine<false, false, true>(std::move(s), options);
-      break;
-    case 2:
-      r = run_engine<false, true, false>(std::move(s), options);
-      break;
-    case 3:
-      r = run_engine<false, true, true>(std::move(s), options);
-      break;
-    case 4:
-      r = run_engine<true, false, false>(std::move(s), options);
-      break;
-    case 5:
-      r = run_engine<true, false, true>(std::move(s), options);
-      break;
-    case 6:
-      r = run_engine<true, true, false>(std::move(s), options);
-      break;
-    default:
-      r = run_engine<true, true, true>(std::move(s), options);
-      break;
+  if (main_phase) {
+    const bool all = options.all_policies;
+    r = run_engine_for(G || all, T || all, P || all, false, std::move(s), options);
   }
   if (scene.shake) shake(r, *scene.shake, pinned, diam_cap, rng, options);
   r.positions = unpermuted(r.positions, order);
