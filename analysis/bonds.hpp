@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 #include "core/packing.hpp"
 
 namespace tripack {

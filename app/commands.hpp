@@ -1,15 +1,27 @@
-// The tripack subcommands. Each returns the process exit code; errors are thrown as exceptions
-// and turned into one line by main().
+// The tripack subcommands: options in, pipeline call, files written, result rendered. Each returns
+// the process exit code; errors are thrown and turned into one line by main().
 #pragma once
 
 #include <cstdint>
-#include <optional>
 #include <string>
+
+#include "report/render.hpp"
 
 namespace tripack::app {
 
 struct GlobalOptions {
   std::string catalogue;  // empty: Catalogue::default_path()
+};
+
+// --json / --csv / --points: how the result is printed.
+struct OutputOptions {
+  bool json = false;
+  bool csv = false;
+  bool points = false;  // JSON: with coordinates
+  report::OutputFormat format() const {
+    return json ? report::OutputFormat::Json
+                : (csv ? report::OutputFormat::Csv : report::OutputFormat::Text);
+  }
 };
 
 inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
@@ -21,36 +33,26 @@ struct BuildOptions {
   std::string variant;
   int digits = 15;
   std::string output;  // -o FILE
-  bool json = false;
   bool polish = true;
-  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
+  bool certify = true;
+  OutputOptions out;
 };
-
-// Above this many disks `build` skips the LP-based certification unless asked explicitly.
-inline constexpr std::size_t kCertifyLimit = 20000;
 
 struct AnalyzeOptions {
   std::string file;
-  std::string convention = "unit-triangle";
+  std::string convention;  // empty: unit-triangle (radius for an x y r file)
   int digits = 15;
   long long n = 0;     // expected number of points (0: any)
   std::string output;  // -o FILE: the certified packing (unit triangle)
-  bool json = false;
+  OutputOptions out;
 };
 
 struct CheckFormulaOptions {
   std::string class_id;
   std::string k_range;  // "A..B" or "K"
   long p = 0;
-  bool json = false;
+  OutputOptions out;
 };
-
-int cmd_classes(const GlobalOptions& g, bool json);
-int cmd_classify(const GlobalOptions& g, long long n, bool json);
-int cmd_build(const GlobalOptions& g, const BuildOptions& o);
-int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o);
-int cmd_table(const GlobalOptions& g, long k_max);
-int cmd_analyze(const AnalyzeOptions& o);
 
 struct BilliardsCommandOptions {
   long long n = 0;  // 0: the scene's n
@@ -58,9 +60,19 @@ struct BilliardsCommandOptions {
   std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
   int threads = 1;
   std::string scene;  // YAML file; empty: the built-in scene
-  bool json = false;
   bool certify = true;
+  std::string output_dir;           // -o DIR: one coordinate file per distinct packing
+  std::string file_format = "txt";  // of those files: txt, csv, json, pck
+  OutputOptions out;
 };
+
+int cmd_classes(const GlobalOptions& g, const OutputOptions& out);
+int cmd_classify(const GlobalOptions& g, long long n, const OutputOptions& out);
+int cmd_build(const GlobalOptions& g, const BuildOptions& o);
+int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o);
+int cmd_table(const GlobalOptions& g, long k_count, const OutputOptions& out);
+int cmd_analyze(const AnalyzeOptions& o);
 int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o);
+int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o);
 
 }  // namespace tripack::app

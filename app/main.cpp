@@ -1,83 +1,153 @@
-// tripack: the command line. Thin: parsing here, work in app/commands.cpp.
+// tripack: the command line. Parsing here, the work in app/commands.cpp.
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <functional>
 #include <iostream>
 
 #include "app/commands.hpp"
 
+namespace {
+
+using namespace tripack::app;
+
+// Every subcommand prints one result; --json / --csv choose the format, --points adds coordinates.
+void add_output_flags(CLI::App* command, OutputOptions& out, bool with_points = false) {
+  command->add_flag("--json", out.json, "print one JSON object");
+  command->add_flag("--csv", out.csv, "print CSV (a header, then rows)");
+  if (with_points)
+    command->add_flag("--points", out.points, "with --json: every packing's coordinates");
+}
+
+// A subcommand and what it runs once parsed.
+using Action = std::function<int()>;
+
+Action add_build(CLI::App& cli, const GlobalOptions& g, BuildOptions& b) {
+  auto* c = cli.add_subcommand("build", "Construct, polish and certify a class member");
+  c->add_option("class", b.class_id, "class id (see 'tripack classes')");
+  c->add_option("--k", b.k, "class index k");
+  c->add_option("--p", b.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
+  c->add_option("--n", b.n, "number of disks: build the catalogue's best class containing n");
+  c->add_option("--variant", b.variant, "variant (e.g. rattler, cavity-1, full)");
+  c->add_option("--digits", b.digits, "significant digits of d (above 18: MPFR polish)")
+      ->check(CLI::Range(1, 1000));
+  c->add_option("-o,--output", b.output,
+                "write coordinates: .txt (x y), .csv, .json, or .pck (i x y, record tables)");
+  c->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
+  c->add_flag("!--no-certify", b.certify, "skip relax/bonds/rigidity/stress from the geometry");
+  add_output_flags(c, b.out, true);
+  return [c, &g, &b] { return *c ? cmd_build(g, b) : -1; };
+}
+
+Action add_analyze(CLI::App& cli, AnalyzeOptions& a) {
+  auto* c = cli.add_subcommand(
+      "analyze",
+      "Relax, find bonds and rattlers, test rigidity, certify a file of points.\n"
+      "Layouts (one point per line unless JSON; '#' lines are comments; indices are 0-based):\n"
+      "  x y        centres (default convention: unit-triangle, the side-1 triangle with\n"
+      "             vertices (0,0) (1,0) (1/2,sqrt3/2))\n"
+      "  x y r      circles of radius r (implies --convention radius)\n"
+      "  i x y      the record tables' style (i = 0..n-1 or 1..n, any order)\n"
+      "  CSV        with a header naming x, y (and index, r, rattler), or bare x,y rows\n"
+      "  JSON       {\"points\": [[x, y], ...]} or a bare list [[x, y], ...]");
+  c->add_option("file", a.file, "the points file")->required();
+  c->add_option("--convention", a.convention,
+                "unit-triangle (centres in the side-1 triangle), radius (circles of radius r in "
+                "a side-1 triangle) or unit-disk-side (unit circles in a triangle of side S)");
+  c->add_option("--digits", a.digits, "significant digits of d, r, S (above 18: MPFR polish)")
+      ->check(CLI::Range(1, 1000));
+  c->add_option("--n", a.n, "expected number of points")->check(CLI::Range(1LL, 100000000LL));
+  c->add_option("-o,--output", a.output,
+                "write the certified packing: .txt, .csv, .json or .pck (i x y)");
+  add_output_flags(c, a.out, true);
+  return [c, &a] { return *c ? cmd_analyze(a) : -1; };
+}
+
+void add_search_options(CLI::App* c, BilliardsCommandOptions& o) {
+  c->add_option("N", o.n, "number of disks (or give --scene)")->check(CLI::Range(1LL, 10000000LL));
+  c->add_option("--runs", o.runs, "number of runs")->check(CLI::Range(1, 1000000));
+  c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
+  c->add_option("--threads", o.threads, "parallel runs")->check(CLI::Range(1, 256));
+  c->add_option("--scene", o.scene, "scene YAML (container, n, initial state, effects)");
+  add_output_flags(c, o.out, true);
+}
+
+Action add_billiards(CLI::App& cli, const GlobalOptions& g, BilliardsCommandOptions& o) {
+  auto* c = cli.add_subcommand(
+      "billiards", "Lubachevsky-Stillinger runs from random starts, certified and ranked");
+  add_search_options(c, o);
+  c->add_flag("!--no-certify", o.certify, "skip relax/bonds/rigidity/stress of the end states");
+  c->add_option("-o,--output", o.output_dir,
+                "directory: one coordinate file per distinct packing, named by its label");
+  c->add_option("--format", o.file_format, "format of those files: txt, csv, json or pck");
+  return [c, &g, &o] { return *c ? cmd_billiards(g, o) : -1; };
+}
+
+Action add_compare(CLI::App& cli, const GlobalOptions& g, BilliardsCommandOptions& o) {
+  auto* c = cli.add_subcommand(
+      "compare", "The catalogue's best builder for N against the best billiards packing");
+  add_search_options(c, o);
+  return [c, &g, &o] { return *c ? cmd_compare(g, o) : -1; };
+}
+
+Action add_check_formula(CLI::App& cli, const GlobalOptions& g, CheckFormulaOptions& o) {
+  auto* c = cli.add_subcommand("check-formula", "Compare built d with the catalogue's closed form");
+  c->add_option("class", o.class_id, "class id")->required();
+  c->add_option("--k", o.k_range, "k or a range A..B")->required();
+  c->add_option("--p", o.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
+  add_output_flags(c, o.out);
+  return [c, &g, &o] { return *c ? cmd_check_formula(g, o) : -1; };
+}
+
+bool wants_json(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--json") return true;
+  return false;
+}
+
+// One line on stderr; with --json also {"error": ...} on stdout, so a program reading stdout
+// always gets one JSON object.
+int fail(const std::string& message, bool json, int code) {
+  std::cerr << "tripack: error: " << message << "\n";
+  if (json) tripack::report::render_error_json(std::cout, message);
+  return code;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  using namespace tripack::app;
   CLI::App cli{"tripack: dense packings of equal disks in an equilateral triangle"};
   cli.require_subcommand(1);
   GlobalOptions g;
   cli.add_option("--catalogue", g.catalogue,
                  "classes.yaml to use (default: $TRIPACK_CATALOGUE or the built-in path)");
-
-  bool json = false;
+  OutputOptions classes_out, classify_out, table_out;
   auto* classes = cli.add_subcommand("classes", "List the catalogue of classes");
-  classes->add_flag("--json", json, "JSON output");
-
+  add_output_flags(classes, classes_out);
   long long classify_n = 0;
   auto* classify = cli.add_subcommand("classify", "Every (class, k[, p]) whose n(k) equals N");
   classify->add_option("N", classify_n, "number of disks")
       ->required()
       ->check(CLI::Range(1LL, 1000000000000LL));
-  classify->add_flag("--json", json, "JSON output");
-
-  BuildOptions b;
-  auto* build = cli.add_subcommand("build", "Construct, polish and report a class member");
-  build->add_option("class", b.class_id, "class id (see 'tripack classes')");
-  build->add_option("--k", b.k, "class index k");
-  build->add_option("--p", b.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
-  build->add_option("--n", b.n, "number of disks: build the catalogue's best class containing n");
-  build->add_option("--variant", b.variant, "variant (e.g. rattler, cavity-1, full)");
-  build->add_option("--digits", b.digits, "significant digits of d (above 18: MPFR polish)")
-      ->check(CLI::Range(1, 1000));
-  build->add_option("-o,--output", b.output, "write coordinates (.txt, .csv or .json)");
-  build->add_flag("--json", b.json, "print one JSON object");
-  build->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
-  build->add_flag("!--no-certify", b.certify, "skip relax/bonds/rigidity/stress from the geometry");
-
-  CheckFormulaOptions cf;
-  auto* check =
-      cli.add_subcommand("check-formula", "Compare built d with the catalogue's closed form");
-  check->add_option("class", cf.class_id, "class id")->required();
-  check->add_option("--k", cf.k_range, "k or a range A..B")->required();
-  check->add_option("--p", cf.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
-  check->add_flag("--json", cf.json, "JSON lines output");
-
-  AnalyzeOptions an;
-  auto* analyze = cli.add_subcommand(
-      "analyze", "Relax, find bonds and rattlers, test rigidity, certify a file of points");
-  analyze->add_option("file", an.file, "points: .txt (x y lines), .csv or .json")->required();
-  analyze->add_option("--convention", an.convention,
-                      "unit-triangle (centres in the side-1 triangle), radius or unit-disk-side "
-                      "(circles in a container)");
-  analyze->add_option("--digits", an.digits, "significant digits of d (above 18: MPFR polish)")
-      ->check(CLI::Range(1, 1000));
-  analyze->add_option("--n", an.n, "expected number of points")
-      ->check(CLI::Range(1LL, 100000000LL));
-  analyze->add_option("-o,--output", an.output,
-                      "write the certified packing (.txt, .csv or .json)");
-  analyze->add_flag("--json", an.json, "print one JSON object");
-
-  BilliardsCommandOptions bl;
-  auto* billiards = cli.add_subcommand(
-      "billiards", "Lubachevsky-Stillinger runs from random starts, certified and ranked");
-  billiards->add_option("N", bl.n, "number of disks (or give --scene)")
-      ->check(CLI::Range(1LL, 10000000LL));
-  billiards->add_option("--runs", bl.runs, "number of runs")->check(CLI::Range(1, 1000000));
-  billiards->add_option("--seed", bl.seed, "seed of run 0 (run r uses seed + r)");
-  billiards->add_option("--threads", bl.threads, "parallel runs")->check(CLI::Range(1, 256));
-  billiards->add_option("--scene", bl.scene, "scene YAML (container, n, initial state, effects)");
-  billiards->add_flag("--json", bl.json, "print one JSON object");
-  billiards->add_flag("!--no-certify", bl.certify,
-                      "skip relax/bonds/rigidity/stress of the end states");
-
-  long table_kmax = 4;
-  auto* table = cli.add_subcommand("table", "Build and polish the first terms of every class");
-  table->add_option("--kmax", table_kmax, "largest k per class")->check(CLI::Range(1, 50));
-
+  add_output_flags(classify, classify_out);
+  long table_k = 4;
+  auto* table =
+      cli.add_subcommand("table", "Build, polish and certify the first terms of every class");
+  table->add_option("--kmax", table_k, "how many k per class")->check(CLI::Range(1, 50));
+  add_output_flags(table, table_out);
+  BuildOptions build;
+  AnalyzeOptions analyze;
+  CheckFormulaOptions check;
+  BilliardsCommandOptions billiards, compare;
+  const std::vector<Action> actions{
+      add_build(cli, g, build),
+      add_analyze(cli, analyze),
+      add_check_formula(cli, g, check),
+      add_billiards(cli, g, billiards),
+      add_compare(cli, g, compare),
+      [&] { return *classes ? cmd_classes(g, classes_out) : -1; },
+      [&] { return *classify ? cmd_classify(g, classify_n, classify_out) : -1; },
+      [&] { return *table ? cmd_table(g, table_k, table_out) : -1; }};
+  const bool json = wants_json(argc, argv);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -85,24 +155,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "tripack: error: " << e.what() << "\n";
-    return 2;
+    return fail(e.what(), json, 2);
   }
   try {
-    if (*classes) return cmd_classes(g, json);
-    if (*classify) return cmd_classify(g, classify_n, json);
-    if (*build) return cmd_build(g, b);
-    if (*check) return cmd_check_formula(g, cf);
-    if (*table) return cmd_table(g, table_kmax);
-    if (*analyze) return cmd_analyze(an);
-    if (*billiards) {
-      if (bl.n == 0 && bl.scene.empty())
-        throw std::invalid_argument("billiards needs N or --scene FILE");
-      return cmd_billiards(g, bl);
-    }
+    for (const auto& action : actions)
+      if (const int code = action(); code >= 0) return code;
   } catch (const std::exception& e) {
-    std::cerr << "tripack: error: " << e.what() << "\n";
-    return 1;
+    return fail(e.what(), json, 1);
   }
   return 0;
 }

@@ -7,10 +7,10 @@
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
-#include "analysis/polish.hpp"
-#include "analysis/polish_mp.hpp"
+#include "polish/polish.hpp"
+#include "polish/polish_mp.hpp"
 #include "analysis/relax.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/analyze.hpp"
 #include "constructors/builders.hpp"
 
 namespace tripack {
@@ -90,7 +90,7 @@ void BM_CertifyPipeline(benchmark::State& s) {  // relax + bonds + polish + rigi
   const Pattern pat = ripple(s.range(0));
   const Packing start = noisy(pat.packing, 1e-4L);
   for (auto _ : s) {
-    const app::Analysis a = app::analyze_packing(start, {});
+    const pipeline::Analysis a = pipeline::analyze_packing(start, {});
     if (!a.certified()) s.SkipWithError("not certified");
   }
   set_n(s, pat.packing.size());

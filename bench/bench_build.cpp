@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 #include "constructors/builders.hpp"
 
 namespace tripack {

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
 #include "core/neighbours.hpp"

@@ -97,7 +97,7 @@ expect_error "digits out of range" "digits" build four-delta --k 2 --digits 5000
 # analyze of a written packing certifies it and finds its 2 rattlers (GL1995 Fig.t22).
 "$TRIPACK" build even-ripple --k 3 -o "$tmp/t22a.csv" >/dev/null
 expect_output "analyze t22a" "certified: rigid with a strictly positive stress" analyze "$tmp/t22a.csv"
-expect_output "analyze t22a rattlers" '"rattlers":[' analyze "$tmp/t22a.csv" --json
+expect_output "analyze t22a rattlers" '"rattler_indices":[8,13]' analyze "$tmp/t22a.csv" --json
 rm -rf "$tmp"
 
 # CONSTRUCTIONS: d(22) = 5 sqrt3/(20 sqrt3 + 7 + 2 sqrt11) = 0.17939690861186597956121884705073659574141764618876

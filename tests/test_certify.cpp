@@ -6,7 +6,7 @@
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 #include "constructors/builders.hpp"
 
 namespace tripack {

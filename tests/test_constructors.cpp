@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"

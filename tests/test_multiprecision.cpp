@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/polish_mp.hpp"
+#include "polish/polish_mp.hpp"
 #include "constructors/builders.hpp"
 
 namespace tripack {

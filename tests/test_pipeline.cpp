@@ -6,13 +6,13 @@
 #include <vector>
 
 #include "analysis/compare.hpp"
-#include "app/pipeline.hpp"
+#include "pipeline/analyze.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/io.hpp"
 #include "sim/billiards.hpp"
 
-namespace tripack::app {
+namespace tripack::pipeline {
 namespace {
 
 const Catalogue& catalogue() {
@@ -214,4 +214,4 @@ TEST(Pipeline, ShakingNamesTheRattlersTheAnalysisFinds) {
 }
 
 }  // namespace
-}  // namespace tripack::app
+}  // namespace tripack::pipeline

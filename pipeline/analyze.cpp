@@ -1,4 +1,4 @@
-#include "app/pipeline.hpp"
+#include "pipeline/analyze.hpp"
 
 #include <fmt/format.h>
 
@@ -7,25 +7,9 @@
 
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
+#include "pipeline/timing.hpp"
 
-namespace tripack::app {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-template <class F>
-auto timed(double& seconds, F&& f) {
-  const auto t0 = Clock::now();
-  auto result = f();
-  seconds = seconds_since(t0);
-  return result;
-}
-
-}  // namespace
+namespace tripack::pipeline {
 
 std::string Analysis::status() const {
   if (!identification.polish.converged)
@@ -132,4 +116,48 @@ Packing packing_from_points(std::vector<Vec2L> pts, Convention c,
   return pk;
 }
 
-}  // namespace tripack::app
+namespace {
+
+const MultiprecisionPolish* high_digits(const Analysis& a, int wanted) {
+  const auto& mp = a.multiprecision;
+  return wanted > 18 && mp && mp->converged ? &*mp : nullptr;
+}
+
+}  // namespace
+
+std::string FileAnalysis::d_string(int wanted) const {
+  if (const auto* mp = high_digits(analysis, wanted)) return mp->d;
+  return format_significant(analysis.pattern.packing.d, std::min(wanted, 18));
+}
+
+std::string FileAnalysis::L_string(int wanted) const {
+  if (const auto* mp = high_digits(analysis, wanted)) return mp->L;
+  return format_significant(1 / analysis.pattern.packing.d, std::min(wanted, 18));
+}
+
+std::string FileAnalysis::value_string(int wanted) const {
+  if (convention == Convention::UnitTriangle) return d_string(wanted);
+  if (high_digits(analysis, wanted) && !mp_value_in_convention.empty())
+    return mp_value_in_convention;
+  return format_significant(from_d(analysis.pattern.packing.d, convention), std::min(wanted, 18));
+}
+
+FileAnalysis analyze_file(const AnalyzeRequest& request) {
+  FileAnalysis result;
+  result.file = request.file;
+  result.digits = request.digits;
+  const auto start = Clock::now();
+  result.convention = request.convention.value_or(Convention::UnitTriangle);
+  Packing packing =
+      packing_from_points(read_points_file(request.file), result.convention, request.expected_n);
+  result.layout = "x y";
+  result.read_seconds = seconds_since(start);
+  result.analysis = analyze_packing(packing, {request.digits});
+  const auto& mp = result.analysis.multiprecision;
+  if (mp && mp->converged && result.convention != Convention::UnitTriangle)
+    result.mp_value_in_convention =
+        radius_or_side_from_d(mp->d, result.convention == Convention::Radius, request.digits);
+  return result;
+}
+
+}  // namespace tripack::pipeline

@@ -38,4 +38,9 @@ struct MultiprecisionPolish {
 MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vector<Bond>& bonds,
                                            const std::vector<int>& rattlers, int digits);
 
+// The radius r = d / (2 (1 + sqrt3 d)) (radius = true) or the side S = 2/d + 2 sqrt3 (false) of
+// SPEC §1 from a decimal d, to `digits` significant digits in MPFR: a d polished to 50 digits
+// keeps its 50 digits in the user's convention.
+std::string radius_or_side_from_d(const std::string& d, bool radius, int digits);
+
 }  // namespace tripack

@@ -1,10 +1,10 @@
-#include "analysis/polish.hpp"
+#include "polish/polish.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "analysis/bond_system.hpp"
+#include "polish/bond_system.hpp"
 
 namespace tripack {
 

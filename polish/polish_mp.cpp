@@ -1,4 +1,4 @@
-#include "analysis/polish_mp.hpp"
+#include "polish/polish_mp.hpp"
 
 // The MPFR C API rather than boost::multiprecision::mpfr_float: Boost 1.74's variable-precision
 // mpfr_float propagates precision by rewriting a process-wide (not thread-local) default precision
@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "analysis/bond_system.hpp"
-#include "analysis/polish.hpp"
+#include "polish/bond_system.hpp"
+#include "polish/polish.hpp"
 
 namespace tripack {
 
@@ -289,6 +289,29 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
     }
   }
   return out;
+}
+
+}  // namespace tripack
+
+namespace tripack {
+
+std::string radius_or_side_from_d(const std::string& d, bool radius, int digits) {
+  const auto prec = static_cast<mpfr_prec_t>(std::ceil((digits + 10) * 3.3219280948873623)) + 8;
+  Mp dv(prec), root3(prec), t(prec);
+  if (mpfr_set_str(dv.get(), d.c_str(), 10, kRnd) != 0)
+    throw std::invalid_argument("not a decimal number: '" + d + "'");
+  mpfr_sqrt_ui(root3.get(), 3, kRnd);
+  if (radius) {  // r = d / (2 (1 + sqrt3 d))
+    mpfr_mul(t.get(), root3.get(), dv.get(), kRnd);
+    mpfr_add_ui(t.get(), t.get(), 1, kRnd);
+    mpfr_mul_ui(t.get(), t.get(), 2, kRnd);
+    mpfr_div(t.get(), dv.get(), t.get(), kRnd);
+  } else {  // S = 2 / d + 2 sqrt3
+    mpfr_ui_div(t.get(), 2, dv.get(), kRnd);
+    mpfr_mul_ui(root3.get(), root3.get(), 2, kRnd);
+    mpfr_add(t.get(), t.get(), root3.get(), kRnd);
+  }
+  return significant(t.get(), digits);
 }
 
 }  // namespace tripack

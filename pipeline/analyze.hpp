@@ -1,6 +1,6 @@
 // The analysis pipeline (SPEC §2): relax -> bonds (+ polish) -> rattlers -> rigidity -> stress
-// -> optional multiprecision, with the time of each stage. app/ is the one place that wires the
-// stages together; `build` and `analyze` both use it.
+// -> optional multiprecision, with the time of each stage. `build`, `analyze` and the billiards
+// search all use it.
 #pragma once
 
 #include <optional>
@@ -9,12 +9,12 @@
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
-#include "analysis/polish_mp.hpp"
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
 #include "core/packing.hpp"
+#include "polish/polish_mp.hpp"
 
-namespace tripack::app {
+namespace tripack::pipeline {
 
 struct StageTimes {
   double construct = 0, relax = 0, bonds = 0, rigidity = 0, stress = 0, multiprecision = 0,
@@ -53,4 +53,29 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options);
 Packing packing_from_points(std::vector<Vec2L> points, Convention c,
                             std::optional<long long> expected_n);
 
-}  // namespace tripack::app
+// `tripack analyze FILE`: points read in any layout, converted to the unit triangle, analysed.
+struct AnalyzeRequest {
+  std::string file;
+  std::optional<Convention> convention;  // none: unit-triangle, or radius for an x y r file
+  int digits = 15;
+  std::optional<long long> expected_n;
+};
+struct FileAnalysis {
+  std::string file;
+  std::string layout;  // how the file was read ("x y", "i x y", "csv", ...)
+  Convention convention = Convention::UnitTriangle;
+  std::vector<std::string> warnings;  // one line each (rounded input, orientation)
+  Analysis analysis;
+  int digits = 15;  // requested; above 18 the MPFR polish ran to this many
+  double read_seconds = 0;
+  // d, L and r or S (d for unit-triangle) with `wanted` significant digits: MPFR's digits when
+  // it ran and more than 18 are wanted, else long double's (at most 18).
+  std::string d_string(int wanted) const;
+  std::string L_string(int wanted) const;
+  std::string value_string(int wanted) const;
+  std::string mp_value_in_convention;  // set when MPFR ran and converged
+  double seconds() const { return read_seconds + analysis.times.total(); }
+};
+FileAnalysis analyze_file(const AnalyzeRequest& request);
+
+}  // namespace tripack::pipeline

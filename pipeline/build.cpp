@@ -1,0 +1,88 @@
+#include "pipeline/build.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "core/io.hpp"
+#include "pipeline/timing.hpp"
+
+namespace tripack::pipeline {
+
+bool BuildResult::verified() const {
+  return analysis && counts_match() && bonds_match() && rattlers_match() && analysis->certified() &&
+         (!exact || exact->ok);
+}
+
+std::string BuildResult::d_string(int wanted) const {
+  if (multiprecision && multiprecision->converged) return multiprecision->d;
+  if (analysis && wanted > 18) return analysis->d_string(wanted);
+  return format_significant(pattern.packing.d, std::min(wanted, 18));
+}
+
+double BuildResult::seconds() const {
+  return times.construct + polish_seconds + times.exact + times.multiprecision +
+         (analysis ? analysis->times.total() : 0.0);
+}
+
+BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
+                              const BuildSettings& settings) {
+  BuildResult b;
+  b.digits = settings.digits;
+  b.pattern = timed(b.times.construct, [&] { return build_pattern(catalogue, request); });
+  if (settings.polish) {
+    b.polish = timed(b.polish_seconds, [&] {
+      return polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
+    });
+    b.polished = true;
+    if (!b.polish.converged)
+      throw std::runtime_error(
+          fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
+                      static_cast<double>(b.polish.max_residual), b.polish.iterations));
+  }
+  if (b.pattern.exact) b.exact = timed(b.times.exact, [&] { return exact_check(b.pattern); });
+  const bool certify =
+      settings.certify && settings.polish && b.pattern.packing.size() <= kCertifyLimit;
+  b.certify_skipped = settings.certify && !certify;
+  if (certify) {
+    b.analysis = analyze_packing(b.pattern.packing, {settings.digits});
+  } else if (settings.digits > 18) {
+    b.multiprecision = timed(b.times.multiprecision, [&] {
+      return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,
+                                   settings.digits);
+    });
+  }
+  const auto& info = catalogue.find(b.pattern.provenance.class_id);
+  const auto& pv = b.pattern.provenance;
+  b.bonds_expected = info.rigid ? catalogue.bonds_of(info, pv.k, pv.p, pv.variant) : std::nullopt;
+  b.rattlers_expected = catalogue.rattlers_of(info, pv.k, pv.p, pv.variant);
+  return b;
+}
+
+BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings) {
+  const auto members = catalogue.classify(n);
+  if (members.empty())
+    throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
+  BestBuild result;
+  BuildSettings quick = settings;
+  quick.certify = false;  // rank the candidates first, certify only the winner
+  quick.digits = 15;
+  std::optional<BuildCandidate> best;
+  for (const auto& m : members) {
+    const BuildResult b = build_and_certify(catalogue, {m.cls->id, m.k, m.p, ""}, quick);
+    result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d});
+    if (!best || b.pattern.packing.d > best->d) best = result.candidates.back();
+  }
+  const Provenance& win = best->member;
+  result.best = build_and_certify(catalogue, {win.class_id, win.k, win.p, win.variant}, settings);
+  return result;
+}
+
+std::string member_name(const Provenance& member) {
+  std::string s = member.class_id + " k=" + std::to_string(member.k);
+  if (member.p) s += " p=" + std::to_string(member.p);
+  if (!member.variant.empty()) s += " variant=" + member.variant;
+  return s;
+}
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,73 @@
+// Build + polish + certify a class member (SPEC §2 steps 1-4), and the catalogue's best member
+// for a given n. Returns results; prints nothing.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/exact_check.hpp"
+#include "constructors/catalogue.hpp"
+#include "constructors/registry.hpp"
+#include "pipeline/analyze.hpp"
+#include "polish/polish.hpp"
+#include "polish/polish_mp.hpp"
+
+namespace tripack::pipeline {
+
+struct BuildSettings {
+  int digits = 15;      // > 18: MPFR polish to this many digits
+  bool polish = true;   // Newton on the builder's bond system
+  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
+};
+
+// Above this many disks the LP-based certification is skipped (reported as skipped).
+inline constexpr std::size_t kCertifyLimit = 20000;
+
+// The whole pipeline on a class member: construct, polish the builder's bond system, verify
+// closed forms exactly, then certify from the geometry alone and compare with what the builder
+// intended.
+struct BuildResult {
+  Pattern pattern;  // as constructed, polished with the builder's bonds
+  PolishReport polish;
+  bool polished = false;
+  std::optional<ExactCheckReport> exact;
+  std::optional<Analysis> analysis;
+  std::optional<MultiprecisionPolish> multiprecision;  // of the builder's bond system
+  StageTimes times;  // construct, exact and (without analysis) multiprecision
+  double polish_seconds = 0;
+  std::optional<long long> bonds_expected, rattlers_expected;  // the catalogue's counts
+  bool certify_skipped = false;
+  int digits = 15;
+
+  bool bonds_match() const { return analysis && analysis->pattern.bonds == pattern.bonds; }
+  bool rattlers_match() const { return analysis && analysis->pattern.rattlers == pattern.rattlers; }
+  bool counts_match() const {
+    return !bonds_expected || static_cast<long long>(pattern.bonds.size()) == *bonds_expected;
+  }
+  // Everything this build claims holds: catalogue counts, geometry equals the builder's, the
+  // certificate, the exact check where one ran.
+  bool verified() const;
+  std::string d_string(int digits) const;  // from MPFR when it ran
+  double seconds() const;                  // every stage
+};
+
+BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
+                              const BuildSettings& settings);
+
+// A candidate of `build --n`: a catalogue member containing n, built and polished.
+struct BuildCandidate {
+  Provenance member;
+  long double d = 0;
+};
+struct BestBuild {
+  BuildResult best;
+  std::vector<BuildCandidate> candidates;  // every member containing n, in catalogue order
+};
+// Builds every member of the catalogue containing n without certificates, then the one with the
+// largest d with `settings`. Throws std::runtime_error when no class contains n.
+BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings);
+
+std::string member_name(const Provenance& member);  // "matrix k=2 p=7 variant=..."
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,111 @@
+#include "pipeline/catalogue_checks.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "pipeline/timing.hpp"
+
+namespace tripack::pipeline {
+
+namespace {
+
+std::vector<std::string> variants_or_default(const Catalogue& catalogue, const ClassInfo& c,
+                                             long k) {
+  std::vector<std::string> variants = catalogue.variants_at(c, k);
+  if (variants.empty()) variants.push_back("");
+  return variants;
+}
+
+}  // namespace
+
+Classification classify(const Catalogue& catalogue, long long n) {
+  Classification c{n, catalogue.classify(n)};
+  if (c.members.empty())
+    throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
+  return c;
+}
+
+FormulaCheck check_formula(const Catalogue& catalogue, const std::string& class_id, long k_first,
+                           long k_last, long p,
+                           const std::function<void(const FormulaCheckRow&)>& on_row) {
+  const auto start = Clock::now();
+  const ClassInfo& c = catalogue.find(class_id);
+  FormulaCheck check;
+  for (long k = k_first; k <= k_last; ++k) {
+    catalogue.check_parameters(c, k, p);
+    for (const auto& v : variants_or_default(catalogue, c, k)) {
+      BuildSettings settings;
+      settings.certify = false;
+      const BuildResult b = build_and_certify(catalogue, {c.id, k, p, v}, settings);
+      FormulaCheckRow row;
+      row.class_id = c.id;
+      row.k = k;
+      row.p = p;
+      row.variant = v;
+      row.n = static_cast<long long>(b.pattern.packing.size());
+      row.d_built = b.pattern.packing.d;
+      std::optional<long double> L;
+      if (const Expression* exact = catalogue.exact_L_of(c, k, p)) {
+        L = exact->eval<long double>(real_env(k, p));
+        row.source = "closed form " + exact->text();
+      } else if (auto chain = catalogue.L_of(c, k, p)) {
+        L = chain;
+        row.source = "chain formula " + c.L.text();
+      }
+      if (L) {
+        row.d_formula = 1 / *L;
+        row.relative_difference = std::fabs(row.d_built * *L - 1);
+      }
+      row.bonds = b.pattern.bonds.size();
+      row.bonds_expected = b.bonds_expected;
+      if (b.exact) {
+        row.exact_ok = b.exact->ok;
+        row.exact_failure = b.exact->failure;
+      }
+      row.ok = (!L || row.relative_difference <= kFormulaTolerance) && b.counts_match() &&
+               row.exact_ok.value_or(true);
+      check.all_ok = check.all_ok && row.ok;
+      if (on_row) on_row(row);
+      check.rows.push_back(std::move(row));
+    }
+  }
+  check.seconds = seconds_since(start);
+  return check;
+}
+
+CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
+                               const std::function<void(const TableRow&)>& on_row) {
+  const auto start = Clock::now();
+  CatalogueTable table;
+  for (const auto& c : catalogue.classes()) {
+    const long p_count = c.has_p ? 3 : 1;
+    for (long pi = 0; pi < p_count; ++pi) {
+      const long p = c.has_p ? c.p_min + pi : 0;
+      for (long k = c.k_min; k < c.k_min + k_count && (!c.k_max || k <= c.k_max); ++k) {
+        for (const auto& v : variants_or_default(catalogue, c, k)) {
+          const auto t0 = Clock::now();
+          const BuildResult b = build_and_certify(catalogue, {c.id, k, p, v}, BuildSettings{});
+          TableRow row;
+          row.member = b.pattern.provenance;
+          row.n = static_cast<long long>(b.pattern.packing.size());
+          row.d = b.pattern.packing.d;
+          row.bonds = b.pattern.bonds.size();
+          row.rattlers = b.pattern.rattlers.size();
+          row.counts_match = b.counts_match();
+          row.geometry_match = b.bonds_match() && b.rattlers_match();
+          row.certified = b.analysis && b.analysis->certified();
+          if (b.exact) row.exact_ok = b.exact->ok;
+          row.ok = b.analysis && b.verified();
+          row.seconds = seconds_since(t0);
+          table.all_ok = table.all_ok && row.ok;
+          if (on_row) on_row(row);
+          table.rows.push_back(std::move(row));
+        }
+      }
+    }
+  }
+  table.seconds = seconds_since(start);
+  return table;
+}
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,27 @@
+#include "pipeline/compare.hpp"
+
+#include "pipeline/timing.hpp"
+
+namespace tripack::pipeline {
+
+ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
+                                           BilliardsSearch search, const BuildSettings& settings) {
+  const auto start = Clock::now();
+  ConstructedVsBilliards result;
+  result.n = n;
+  if (!catalogue.classify(n).empty()) result.constructed = build_best_for_n(catalogue, n, settings);
+  if (search.scene.n == 0) search.scene = default_scene(static_cast<int>(n));
+  prepare_scene(catalogue, search.scene, n);
+  result.billiards = search_billiards(search);
+  if (result.both()) {
+    const BuildResult& best = result.constructed->best;
+    const Pattern& built = best.analysis ? best.analysis->pattern : best.pattern;
+    const Pattern& found = result.billiards.packings.front().pattern;
+    result.comparison = compare_packings(built, found);
+    result.d_relative_difference = (found.packing.d - built.packing.d) / built.packing.d;
+  }
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,29 @@
+// Constructed vs billiards for one n (SPEC §2 step 6): the catalogue's best builder against the
+// best packing a billiards search finds: d difference, bonds, rattlers, and whether the contact
+// graphs agree up to the triangle's 6 symmetries.
+#pragma once
+
+#include <optional>
+
+#include "analysis/compare.hpp"
+#include "pipeline/billiards_search.hpp"
+#include "pipeline/build.hpp"
+
+namespace tripack::pipeline {
+
+struct ConstructedVsBilliards {
+  long long n = 0;
+  std::optional<BestBuild> constructed;  // none: no class of the catalogue contains n
+  BilliardsSearchResult billiards;
+  // Against the best (first-ranked) billiards packing, when both exist:
+  std::optional<Comparison> comparison;
+  long double d_relative_difference = 0;  // (d_billiards - d_constructed) / d_constructed
+  double seconds = 0;
+  bool both() const { return constructed && !billiards.packings.empty(); }
+};
+
+// `search.scene` may be left empty: the default scene for n is used then.
+ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
+                                           BilliardsSearch search, const BuildSettings& settings);
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,23 @@
+// Wall-clock timing of pipeline stages.
+#pragma once
+
+#include <chrono>
+
+namespace tripack::pipeline {
+
+using Clock = std::chrono::steady_clock;
+
+inline double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Runs f, stores its wall time in `seconds`, returns its result.
+template <class F>
+auto timed(double& seconds, F&& f) {
+  const auto start = Clock::now();
+  auto result = f();
+  seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace tripack::pipeline

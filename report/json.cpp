@@ -1,0 +1,300 @@
+// JSON renderers (conventions in render.hpp).
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "core/conventions.hpp"
+#include "core/io.hpp"
+#include "report/render.hpp"
+
+namespace tripack::report {
+
+using nlohmann::json;
+using namespace pipeline;
+
+namespace {
+
+// Invalid UTF-8 (a label or a file name) is replaced, never thrown: a formatting problem must not
+// discard computed results.
+void emit(std::ostream& out, const json& j) {
+  out << j.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
+}
+
+std::string digits17(long double v) {
+  return format_significant(v, 17);
+}
+
+json optional_string(const std::string& s) {
+  return s.empty() ? json(nullptr) : json(s);
+}
+
+json points_json(const Packing& packing) {
+  json points = json::array();
+  for (const auto& p : packing.points)
+    points.push_back({format_significant(p.x, 21), format_significant(p.y, 21)});
+  return points;
+}
+
+// The counts and indices every packing-carrying object has.
+void add_counts(json& j, const Pattern& pattern) {
+  j["bonds"] = pattern.bonds.size();
+  j["rattlers"] = pattern.rattlers.size();
+  j["rattler_indices"] = pattern.rattlers;
+}
+
+json certificate_json(const Analysis& a) {
+  return {{"rigid", a.rigidity.rigid},
+          {"stress_exists", a.stress.exists},
+          {"stress_strictly_positive", a.stress.strictly_positive},
+          {"min_force", static_cast<double>(a.stress.min_force)},
+          {"balance_residual", static_cast<double>(a.stress.residual)},
+          {"certified", a.certified()},
+          {"verdict", a.status()},
+          {"relax_iterations", a.relax.iterations}};
+}
+
+json analysis_stage_seconds(const Analysis& a) {
+  return {{"relax", a.times.relax},
+          {"bonds", a.times.bonds},
+          {"rigidity", a.times.rigidity},
+          {"stress", a.times.stress},
+          {"multiprecision", a.times.multiprecision}};
+}
+
+json member_json(const Provenance& m) {
+  return {{"class", m.class_id},
+          {"k", m.k},
+          {"p", m.p ? json(m.p) : json(nullptr)},
+          {"variant", optional_string(m.variant)}};
+}
+
+json build_json(const BuildResult& b, const RenderOptions& o) {
+  const auto& pk = b.pattern.packing;
+  const long long n = static_cast<long long>(pk.size());
+  const long double L = 1.0L / pk.d;
+  json j = member_json(b.pattern.provenance);
+  j["n"] = n;
+  j["d"] = b.digits > 18 ? b.d_string(b.digits) : digits17(pk.d);
+  j["L"] = digits17(L);
+  j["delta"] = static_cast<double>(oler_delta(n, L));
+  add_counts(j, b.pattern);
+  j["bonds_expected"] = b.bonds_expected ? json(*b.bonds_expected) : json(nullptr);
+  j["rattlers_expected"] = b.rattlers_expected ? json(*b.rattlers_expected) : json(nullptr);
+  j["seconds"] = b.seconds();
+  j["stage_seconds"] = {
+      {"construct", b.times.construct}, {"polish", b.polish_seconds}, {"exact", b.times.exact}};
+  if (b.analysis) {
+    j["stage_seconds"].update(analysis_stage_seconds(*b.analysis));
+    j["certificate"] = certificate_json(*b.analysis);
+    j["certificate"]["bonds_match_builder"] = b.bonds_match();
+    j["certificate"]["rattlers_match_builder"] = b.rattlers_match();
+  } else {
+    j["stage_seconds"]["multiprecision"] = b.times.multiprecision;
+    j["certificate"] = nullptr;
+    j["certify_skipped"] = b.certify_skipped;
+  }
+  if (b.exact) j["exact_check"] = b.exact->ok;
+  if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);
+  if (o.points) j["points"] = points_json(pk);
+  return j;
+}
+
+json analysis_json(const Analysis& a) {
+  json j;
+  j["d"] = digits17(a.pattern.packing.d);
+  add_counts(j, a.pattern);
+  j["certificate"] = certificate_json(a);
+  return j;
+}
+
+json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
+  json j;
+  j["n"] = r.scene.n;
+  j["runs_asked"] = r.runs_asked;
+  j["seconds"] = r.seconds;
+  j["runs"] = json::array();
+  for (const auto& run : r.runs) {
+    json x{{"seed", run.seed},
+           {"events", run.sim.events},
+           {"collisions", run.sim.collisions},
+           {"seconds", run.sim.seconds},
+           {"d_billiards", digits17(run.sim.packing.d)},
+           {"stop", run.sim.stop_reason},
+           {"label", run.label}};
+    if (run.analysis) x.update(analysis_json(*run.analysis));
+    if (r.scene.shake)
+      x["shake"] = {{"collisions", run.sim.shake_collisions},
+                    {"seconds", run.sim.shake_seconds},
+                    {"rattler_indices", run.sim.shake_rattlers}};
+    if (!run.error.empty()) x["error"] = run.error;
+    j["runs"].push_back(x);
+  }
+  j["packings"] = json::array();
+  for (std::size_t i = 0; i < r.packings.size(); ++i) {
+    const auto& x = r.packings[i];
+    json p{{"rank", i + 1},
+           {"label", x.label},
+           {"d", digits17(x.pattern.packing.d)},
+           {"L", digits17(1 / x.pattern.packing.d)},
+           {"delta", static_cast<double>(oler_delta(r.scene.n, 1 / x.pattern.packing.d))},
+           {"certified", x.certified},
+           {"verdict", x.verdict},
+           {"runs", x.runs},
+           {"first_seed", x.first_seed}};
+    add_counts(p, x.pattern);
+    if (o.points) p["points"] = points_json(x.pattern.packing);
+    j["packings"].push_back(p);
+  }
+  return j;
+}
+
+}  // namespace
+
+void render_json(std::ostream& out, const Catalogue& catalogue, const RenderOptions&) {
+  json classes = json::array();
+  for (const auto& c : catalogue.classes()) {
+    json j{{"id", c.id},
+           {"display", c.display},
+           {"n", c.n.text()},
+           {"k_min", c.k_min},
+           {"k_max", c.k_max ? json(c.k_max) : json(nullptr)},
+           {"p_min", c.has_p ? json(c.p_min) : json(nullptr)},
+           {"L", c.L.empty() ? json(nullptr) : json(c.L.text())},
+           {"bonds", c.bonds.empty() ? json(nullptr) : json(c.bonds.text())},
+           {"rattlers", c.rattlers.empty() ? json(nullptr) : json(c.rattlers.text())},
+           {"builder", c.builder}};
+    json variants = json::array();
+    for (const auto& v : c.variants) variants.push_back(v.id);
+    j["variants"] = variants;
+    j["claim"] = {{"status", c.claim_status},
+                  {"best", c.claim_best},
+                  {"tight", c.claim_tight},
+                  {"source", c.claim_source}};
+    classes.push_back(j);
+  }
+  emit(out, {{"classes", classes}, {"seconds", 0.0}});
+}
+
+void render_json(std::ostream& out, const Classification& c, const RenderOptions&) {
+  json members = json::array();
+  for (const auto& m : c.members)
+    members.push_back({{"class", m.cls->id},
+                       {"k", m.k},
+                       {"p", m.cls->has_p ? json(m.p) : json(nullptr)},
+                       {"display", m.cls->display}});
+  emit(out, {{"n", c.n}, {"members", members}, {"seconds", 0.0}});
+}
+
+void render_json(std::ostream& out, const BestBuild& b, const RenderOptions& o) {
+  json j = build_json(b.best, o);
+  if (!b.candidates.empty()) {
+    j["candidates"] = json::array();
+    for (const auto& c : b.candidates) {
+      json x = member_json(c.member);
+      x["d"] = digits17(c.d);
+      j["candidates"].push_back(x);
+    }
+  }
+  emit(out, j);
+}
+
+void render_json(std::ostream& out, const FormulaCheck& c, const RenderOptions&) {
+  json rows = json::array();
+  for (const auto& r : c.rows)
+    rows.push_back(
+        {{"class", r.class_id},
+         {"k", r.k},
+         {"p", r.p ? json(r.p) : json(nullptr)},
+         {"variant", optional_string(r.variant)},
+         {"n", r.n},
+         {"d_built", digits17(r.d_built)},
+         {"d_formula", r.d_formula ? json(digits17(*r.d_formula)) : json(nullptr)},
+         {"relative_difference",
+          r.d_formula ? json(static_cast<double>(r.relative_difference)) : json(nullptr)},
+         {"bonds", r.bonds},
+         {"bonds_expected", r.bonds_expected ? json(*r.bonds_expected) : json(nullptr)},
+         {"exact_check", r.exact_ok ? json(*r.exact_ok) : json(nullptr)},
+         {"source", r.source},
+         {"ok", r.ok}});
+  emit(out, {{"rows", rows}, {"all_ok", c.all_ok}, {"seconds", c.seconds}});
+}
+
+void render_json(std::ostream& out, const CatalogueTable& t, const RenderOptions&) {
+  json rows = json::array();
+  for (const auto& r : t.rows) {
+    json x = member_json(r.member);
+    x.update({{"n", r.n},
+              {"d", digits17(r.d)},
+              {"L", digits17(1 / r.d)},
+              {"delta", static_cast<double>(oler_delta(r.n, 1 / r.d))},
+              {"bonds", r.bonds},
+              {"rattlers", r.rattlers},
+              {"counts_match_catalogue", r.counts_match},
+              {"geometry_matches_builder", r.geometry_match},
+              {"certified", r.certified},
+              {"exact_check", r.exact_ok ? json(*r.exact_ok) : json(nullptr)},
+              {"ok", r.ok},
+              {"seconds", r.seconds}});
+    rows.push_back(x);
+  }
+  emit(out, {{"rows", rows}, {"all_ok", t.all_ok}, {"seconds", t.seconds}});
+}
+
+void render_json(std::ostream& out, const FileAnalysis& f, const RenderOptions& o) {
+  const Analysis& a = f.analysis;
+  const auto& pk = a.pattern.packing;
+  const long long n = static_cast<long long>(pk.size());
+  json j;
+  j["file"] = f.file;
+  j["layout"] = f.layout;
+  j["n"] = n;
+  const int digits = std::max(f.digits, 17);
+  j["d"] = f.d_string(digits);
+  j["L"] = f.L_string(digits);
+  j["delta"] = static_cast<double>(oler_delta(n, 1 / pk.d));
+  j["convention"] = convention_name(f.convention);
+  j["value_in_convention"] = f.value_string(digits);
+  if (f.convention == Convention::Radius) j["r"] = f.value_string(digits);
+  if (f.convention == Convention::UnitDiskSide) j["S"] = f.value_string(digits);
+  j["d_start"] = digits17(a.relax.d_start);
+  add_counts(j, a.pattern);
+  j["certificate"] = certificate_json(a);
+  j["warnings"] = f.warnings;
+  j["seconds"] = f.seconds();
+  j["stage_seconds"] = analysis_stage_seconds(a);
+  j["stage_seconds"]["read"] = f.read_seconds;
+  if (o.points) j["points"] = points_json(pk);
+  emit(out, j);
+}
+
+void render_json(std::ostream& out, const BilliardsSearchResult& r, const RenderOptions& o) {
+  emit(out, billiards_json(r, o));
+}
+
+void render_json(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions& o) {
+  json j;
+  j["n"] = c.n;
+  j["seconds"] = c.seconds;
+  j["constructed"] = c.constructed ? build_json(c.constructed->best, o) : json(nullptr);
+  j["billiards"] = billiards_json(c.billiards, o);
+  if (c.comparison) {
+    const auto& best = c.billiards.packings.front();
+    j["comparison"] = {{"billiards_label", best.label},
+                       {"d_relative_difference", static_cast<double>(c.d_relative_difference)},
+                       {"same_packing", c.comparison->same},
+                       {"same_d", c.comparison->same_d},
+                       {"same_contact_graph", c.comparison->isomorphic},
+                       {"symmetry", c.comparison->symmetry
+                                        ? json(std::string(symmetry_name(*c.comparison->symmetry)))
+                                        : json(nullptr)},
+                       {"reason", c.comparison->reason}};
+  } else {
+    j["comparison"] = nullptr;
+  }
+  emit(out, j);
+}
+
+void render_error_json(std::ostream& out, const std::string& message) {
+  emit(out, {{"error", message}});
+}
+
+}  // namespace tripack::report
