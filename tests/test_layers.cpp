@@ -1,0 +1,86 @@
+// The layers' arrows (SPEC §8): core <- polish <- {constructors, analysis}; core <- sim; those <-
+// pipeline <- {report, store, campaign} <- app. Every #include "dir/..." of a source file must
+// name its own layer or one below it; tests/ and bench/ may include anything.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each layer and the layers it may include (itself included).
+const std::map<std::string, std::set<std::string>>& allowed_includes() {
+  static const std::map<std::string, std::set<std::string>> allowed = [] {
+    std::map<std::string, std::set<std::string>> a;
+    a["core"] = {"core"};
+    a["polish"] = {"core", "polish"};
+    a["constructors"] = {"core", "polish", "constructors"};
+    a["analysis"] = {"core", "polish", "analysis"};
+    a["sim"] = {"core", "sim"};
+    a["pipeline"] = {"core", "polish", "constructors", "analysis", "sim", "pipeline"};
+    for (const char* upper : {"report", "store", "campaign"}) {
+      a[upper] = a["pipeline"];
+      a[upper].insert(upper);
+    }
+    a["app"] = a["pipeline"];
+    for (const char* upper : {"report", "store", "campaign", "app"}) a["app"].insert(upper);
+    return a;
+  }();
+  return allowed;
+}
+
+// "file:line includes dir/x.hpp" for every include that points up or sideways.
+std::vector<std::string> layer_violations(const fs::path& root) {
+  std::vector<std::string> found;
+  const std::regex include_line(R"(^\s*#\s*include\s*"([a-z_]+)/[^"]+")");
+  for (const auto& [layer, allowed] : allowed_includes()) {
+    if (!fs::is_directory(root / layer)) continue;
+    for (const auto& entry : fs::recursive_directory_iterator(root / layer)) {
+      const auto ext = entry.path().extension();
+      if (!entry.is_regular_file() || (ext != ".cpp" && ext != ".hpp")) continue;
+      std::ifstream in(entry.path());
+      std::string line;
+      for (int number = 1; std::getline(in, line); ++number) {
+        std::smatch m;
+        if (std::regex_search(line, m, include_line) && allowed_includes().count(m[1]) &&
+            !allowed.count(m[1]))
+          found.push_back(fs::relative(entry.path(), root).string() + ":" +
+                          std::to_string(number) + " includes " + m[1].str() + "/");
+      }
+    }
+  }
+  return found;
+}
+
+TEST(Layers, EveryIncludePointsDown) {
+  const auto violations = layer_violations(TRIPACK_SOURCE_DIR);
+  for (const auto& v : violations) ADD_FAILURE() << v;
+  // The check saw the tree: each layer directory exists.
+  for (const char* layer : {"core", "polish", "constructors", "analysis", "sim", "pipeline",
+                            "report", "app"})
+    EXPECT_TRUE(fs::is_directory(fs::path(TRIPACK_SOURCE_DIR) / layer)) << layer;
+}
+
+TEST(Layers, APlantedUpwardIncludeIsCaught) {
+  const fs::path root = fs::temp_directory_path() / "tripack_layers_test";
+  fs::remove_all(root);
+  for (const char* dir : {"core", "sim", "report", "app"}) fs::create_directories(root / dir);
+  std::ofstream(root / "core" / "bad.hpp") << "#include \"analysis/relax.hpp\"\n";
+  std::ofstream(root / "sim" / "bad.cpp") << "  #  include \"constructors/registry.hpp\"\n";
+  std::ofstream(root / "report" / "ok.cpp") << "#include \"pipeline/build.hpp\"\n#include <cmath>\n";
+  std::ofstream(root / "app" / "ok.cpp") << "#include \"report/render.hpp\"\n";
+  const auto violations = layer_violations(root);
+  fs::remove_all(root);
+  ASSERT_EQ(violations.size(), 2u);
+  EXPECT_EQ(violations[0], "core/bad.hpp:1 includes analysis/");
+  EXPECT_EQ(violations[1], "sim/bad.cpp:1 includes constructors/");
+}
+
+}  // namespace
