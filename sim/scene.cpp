@@ -143,6 +143,9 @@ void validate_scene(const Scene& s) {
       if (!(st.rate > 0 && std::isfinite(st.rate)))
         fail("growth.schedule rate must be finite and > 0");
     }
+  // Random points start at diameter 0: without growth nothing would ever happen until max_seconds.
+  if (s.points.empty() && !(s.growth && s.growth->rate > 0))
+    fail("a random start has disks of diameter 0: it needs growth with a rate > 0");
   if (s.shake && s.shake->per_disk == 0) fail("shake.per_disk must be at least 1");
   if (s.shake && !(s.shake->rattler_factor > 1 && std::isfinite(s.shake->rattler_factor)))
     fail("shake.rattler_factor must be finite and > 1");
