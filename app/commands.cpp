@@ -518,7 +518,7 @@ int cmd_analyze(const AnalyzeOptions& o) {
   if (!convention)
     throw std::invalid_argument("unknown convention '" + o.convention +
                                 "' (unit-triangle, radius, unit-disk-side)");
-  Packing start = packing_from_points(read_points_file(o.file), *convention,
+  Packing start = packing_from_points(read_points_file(o.file).points, *convention,
                                       o.n ? std::optional<long long>(o.n) : std::nullopt);
   const Analysis a = analyze_packing(start, {o.digits});
   if (!o.output.empty()) write_pattern(o.output, a.pattern);
