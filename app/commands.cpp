@@ -15,6 +15,7 @@
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/compare.hpp"
+#include "report/packing_file.hpp"
 
 namespace tripack::app {
 
@@ -115,7 +116,8 @@ std::filesystem::path prepare_output_dir(const BilliardsCommandOptions& o) {
 void write_distinct_packings(const pipeline::BilliardsSearchResult& result,
                              const std::filesystem::path& dir, const std::string& extension) {
   for (const auto& x : result.packings)
-    write_pattern((dir / (x.label + "." + extension)).string(), x.pattern);
+    report::write_packing_file((dir / (x.label + "." + extension)).string(), x.pattern, 17, nullptr,
+                               x.label);
 }
 
 }  // namespace
@@ -145,7 +147,13 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
         pipeline::build_and_certify(catalogue, {o.class_id, o.k, o.p, o.variant}, settings);
   }
   print_result(result, o.out);
-  if (!o.output.empty()) write_pattern(o.output, result.best.pattern);
+  if (!o.output.empty()) {
+    const auto& b = result.best;
+    const auto* mp = b.analysis && b.analysis->multiprecision ? &*b.analysis->multiprecision
+                     : b.multiprecision                       ? &*b.multiprecision
+                                                              : nullptr;
+    report::write_packing_file(o.output, b.pattern, o.digits, mp);
+  }
   return 0;
 }
 
@@ -178,7 +186,10 @@ int cmd_analyze(const AnalyzeOptions& o) {
   const auto result = pipeline::analyze_file(request);
   for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
   print_result(result, o.out);
-  if (!o.output.empty()) write_pattern(o.output, result.analysis.pattern);
+  if (!o.output.empty()) {
+    const auto& mp = result.analysis.multiprecision;
+    report::write_packing_file(o.output, result.analysis.pattern, o.digits, mp ? &*mp : nullptr);
+  }
   return 0;
 }
 

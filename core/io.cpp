@@ -2,10 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string_view>
+
+#include "core/conventions.hpp"
 
 namespace tripack {
 
@@ -16,6 +23,7 @@ FileFormat format_from_path(const std::string& path) {
   };
   if (ends_with(".csv")) return FileFormat::Csv;
   if (ends_with(".json")) return FileFormat::Json;
+  if (ends_with(".pck") || ends_with(".records")) return FileFormat::Records;
   return FileFormat::Text;
 }
 
@@ -94,6 +102,52 @@ void write_json(std::ostream& out, const Pattern& pattern) {
   out << j.dump(1) << "\n";
 }
 
+RecordsTable records_table(const Pattern& pattern, int digits) {
+  // 21 significant digits already round-trip a long double: more would print noise.
+  digits = std::clamp(digits, 1, 21);
+  auto text = [digits](long double v) { return format_significant(v, digits); };
+  const auto& pk = pattern.packing;
+  const auto& pv = pattern.provenance;
+  RecordsTable t;
+  if (!pv.class_id.empty()) {
+    t.class_name = pv.class_id;
+    if (pv.p) t.class_name += " p=" + std::to_string(pv.p);
+    t.class_name += " k=" + std::to_string(pv.k);
+    if (!pv.variant.empty()) t.class_name += " variant=" + pv.variant;
+  }
+  t.d = text(pk.d);
+  t.r = text(radius_from_d(pk.d));
+  t.S = text(side_from_d(pk.d));
+  t.L = text(1 / pk.d);
+  t.bonds = pattern.bonds.size();
+  t.rattlers = pattern.rattlers;
+  for (const auto& p : pk.points) t.points.emplace_back(text(p.x), text(p.y));
+  return t;
+}
+
+void write_records(std::ostream& out, const RecordsTable& table) {
+  out << "# tripack record table: n equal disks, centres in the unit triangle "
+         "(0,0) (1,0) (1/2,sqrt3/2)\n";
+  out << "# i is 0-based; d = minimum distance of the centres; r = radius of n circles in the\n";
+  out << "# side-1 triangle; S = side of the smallest triangle holding n circles of radius 1; "
+         "L = 1/d\n";
+  out << "# convention: unit-triangle (centres)\n";
+  out << "# layout: i x y\n";
+  out << "# n: " << table.points.size() << "\n";
+  if (!table.label.empty()) out << "# label: " << table.label << "\n";
+  if (!table.class_name.empty()) out << "# class: " << table.class_name << "\n";
+  out << "# d: " << table.d << "\n";
+  out << "# r: " << table.r << "\n";
+  out << "# S: " << table.S << "\n";
+  out << "# L: " << table.L << "\n";
+  out << "# bonds: " << table.bonds << "\n";
+  out << "# rattlers:";
+  for (int r : table.rattlers) out << ' ' << r;
+  out << "\n";
+  for (std::size_t i = 0; i < table.points.size(); ++i)
+    out << i << ' ' << table.points[i].first << ' ' << table.points[i].second << "\n";
+}
+
 void write_pattern(const std::string& path, const Pattern& pattern) {
   std::ofstream out(path);
   if (!out) throw InputError("cannot open '" + path + "' for writing");
@@ -107,121 +161,411 @@ void write_pattern(const std::string& path, const Pattern& pattern) {
     case FileFormat::Json:
       write_json(out, pattern);
       break;
+    case FileFormat::Records:
+      // 17 digits: a double's round trip, the precision record tables are compared at.
+      write_records(out, records_table(pattern, 17));
+      break;
   }
   if (!out) throw InputError("failed writing '" + path + "'");
 }
 
+// ---------------------------------------------------------------------------------------------
+// Reading
+
 namespace {
 
-Vec2L checked_point(long double x, long double y, const std::string& where) {
-  if (!std::isfinite(x) || !std::isfinite(y))
-    throw InputError(where + ": coordinate is not a finite number");
-  return {x, y};
+// One data line of a text or CSV file: its 1-based line number and its fields, trimmed.
+struct Row {
+  int line = 0;
+  std::vector<std::string> fields;
+};
+
+// The data rows of a text or CSV file and what its comment lines declare.
+struct Scanned {
+  std::vector<Row> rows;
+  std::optional<std::string> layout;  // from "# layout: ..."
+  int layout_line = 0;
+  std::optional<long double> declared_d;  // from "# d: ..."
+};
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
 }
 
-std::vector<Vec2L> read_rows(std::istream& in, bool csv) {
-  std::vector<Vec2L> pts;
+std::string lowercase(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string at_line(int line) {
+  return "line " + std::to_string(line);
+}
+
+// Strict: the whole field is one number (std::stold alone would accept "1.5abc").
+bool parse_real(std::string_view field, long double& value) {
+  const std::string s(trim(field));
+  if (s.empty()) return false;
+  std::size_t used = 0;
+  try {
+    value = std::stold(s, &used);
+  } catch (...) {
+    return false;
+  }
+  return used == s.size();
+}
+
+std::optional<long long> parse_integer(std::string_view field) {
+  const auto s = trim(field);
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return value;
+}
+
+const std::vector<std::string> kTextLayouts = {"x y", "x y r", "i x y"};
+
+// "# layout: i x y" names the columns of a text file; "# d: 0.17..." is checked against the
+// points by packing_from_points. Other comments are ignored.
+void read_comment(std::string_view body, int line, bool text_layouts, Scanned& s) {
+  body = trim(body);
+  const std::string lower = lowercase(body);
+  if (text_layouts && lower.starts_with("layout:")) {
+    std::istringstream words(lower.substr(7));
+    std::string word, layout;
+    while (words >> word) layout += (layout.empty() ? "" : " ") + word;
+    if (std::find(kTextLayouts.begin(), kTextLayouts.end(), layout) == kTextLayouts.end())
+      throw InputError(at_line(line) + ": unknown layout '" + layout +
+                       "' (known: 'x y', 'x y r', 'i x y')");
+    if (s.layout && *s.layout != layout)
+      throw InputError(at_line(line) + ": layout '" + layout + "' contradicts " +
+                       at_line(s.layout_line) + "'s '" + *s.layout + "'");
+    s.layout = layout;
+    s.layout_line = line;
+  } else if (lower.starts_with("d:")) {
+    std::istringstream words(std::string(body.substr(2)));
+    std::string first;
+    long double d = 0;
+    if (words >> first && parse_real(first, d) && std::isfinite(d) && d > 0) s.declared_d = d;
+  }
+}
+
+// Splits every non-comment, non-blank line: on `separator`, or on whitespace when it is 0.
+Scanned scan(std::istream& in, char separator) {
+  Scanned s;
   std::string line;
   int lineno = 0;
-  bool header_allowed = csv;
   while (std::getline(in, line)) {
     ++lineno;
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    std::vector<std::string> fields;
-    if (csv) {
-      std::stringstream ss(line);
-      std::string f;
-      while (std::getline(ss, f, ',')) fields.push_back(f);
-    } else {
-      std::stringstream ss(line);
-      std::string f;
-      while (ss >> f) fields.push_back(f);
+    const auto content = trim(line);
+    if (content.empty()) continue;
+    if (content.front() == '#') {
+      read_comment(content.substr(1), lineno, separator == 0, s);
+      continue;
     }
-    const std::string where = "line " + std::to_string(lineno);
-    auto parse = [&](const std::string& s, long double& v) {
-      std::size_t used = 0;
-      try {
-        v = std::stold(s, &used);
-      } catch (...) {
-        return false;
-      }
-      return s.find_first_not_of(" \t\r", used) == std::string::npos;
-    };
-    if (csv) {
-      // index,x,y[,rattler] or x,y
-      long double a = 0, b = 0, c = 0;
-      const bool with_index = fields.size() >= 3;
-      bool ok = with_index ? (parse(fields[0], a) && parse(fields[1], b) && parse(fields[2], c))
-                           : (fields.size() == 2 && parse(fields[0], b) && parse(fields[1], c));
-      if (!ok && header_allowed) {
-        header_allowed = false;
-        continue;
-      }
-      if (!ok)
-        throw InputError(where + ": expected 'x,y' or 'index,x,y,...' numbers, got '" + line + "'");
-      pts.push_back(checked_point(b, c, where));
+    Row row{lineno, {}};
+    if (separator == 0) {
+      std::istringstream words{std::string(content)};
+      std::string f;
+      while (words >> f) row.fields.push_back(f);
     } else {
-      long double x = 0, y = 0;
-      if (fields.size() != 2 || !parse(fields[0], x) || !parse(fields[1], y))
-        throw InputError(where + ": expected two numbers 'x y', got '" + line + "'");
-      pts.push_back(checked_point(x, y, where));
+      std::istringstream cells{std::string(content)};
+      std::string f;
+      while (std::getline(cells, f, separator)) {
+        auto v = trim(f);
+        // Quoted fields: high-precision numbers travel as strings in CSV (SPEC §9).
+        if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+        row.fields.emplace_back(v);
+      }
+      if (content.back() == separator) row.fields.emplace_back();  // "1,2," has 3 fields
     }
-    header_allowed = false;
+    s.rows.push_back(std::move(row));
   }
   if (in.bad()) throw InputError("read error");
+  return s;
+}
+
+long double real_at(const Row& row, int column) {
+  const std::string& f = row.fields[static_cast<std::size_t>(column)];
+  long double v = 0;
+  if (!parse_real(f, v)) throw InputError(at_line(row.line) + ": '" + f + "' is not a number");
+  return v;
+}
+
+long double coordinate_at(const Row& row, int column) {
+  const long double v = real_at(row, column);
+  if (!std::isfinite(v))
+    throw InputError(at_line(row.line) + ": coordinate '" +
+                     row.fields[static_cast<std::size_t>(column)] + "' is not a finite number");
+  return v;
+}
+
+// Why `column` is not one radius > 0 on every row, or nothing when it is.
+std::optional<std::string> radius_problem(const std::vector<Row>& rows, int column) {
+  const auto c = static_cast<std::size_t>(column);
+  const Row& first = rows.front();
+  const long double r = real_at(first, column);
+  if (!(r > 0) || !std::isfinite(r))
+    return at_line(first.line) + ": r = " + first.fields[c] + " is not a finite number > 0";
+  for (const auto& row : rows)
+    if (real_at(row, column) != r)
+      return at_line(row.line) + ": r = " + row.fields[c] + " differs from " + at_line(first.line) +
+             "'s r = " + first.fields[c];
+  return std::nullopt;
+}
+
+// Why `column` is not a permutation of 0..n-1 or 1..n, or nothing when it is; `order` then gets
+// the row of each index.
+std::optional<std::string> index_problem(const std::vector<Row>& rows, int column,
+                                         std::vector<std::size_t>* order = nullptr) {
+  const auto c = static_cast<std::size_t>(column);
+  std::vector<long long> index;
+  for (const auto& row : rows) {
+    const auto i = parse_integer(row.fields[c]);
+    if (!i) return at_line(row.line) + ": index '" + row.fields[c] + "' is not an integer";
+    index.push_back(*i);
+  }
+  const auto lowest = std::min_element(index.begin(), index.end());
+  const long long base = *lowest;
+  const auto n = static_cast<long long>(rows.size());
+  if (base != 0 && base != 1)
+    return at_line(rows[static_cast<std::size_t>(lowest - index.begin())].line) +
+           ": the smallest index is " + std::to_string(base) + "; indices must run 0.." +
+           std::to_string(n - 1) + " or 1.." + std::to_string(n);
+  std::vector<int> line_of(rows.size(), 0);
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const long long slot = index[k] - base;
+    if (slot >= n)
+      return at_line(rows[k].line) + ": index " + std::to_string(index[k]) + " is beyond " +
+             std::to_string(base) + ".." + std::to_string(base + n - 1) + " (" + std::to_string(n) +
+             " points)";
+    auto& seen = line_of[static_cast<std::size_t>(slot)];
+    if (seen)
+      return at_line(rows[k].line) + ": index " + std::to_string(index[k]) + " repeats " +
+             at_line(seen);
+    seen = rows[k].line;
+  }
+  if (order) {
+    order->assign(rows.size(), 0);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      (*order)[static_cast<std::size_t>(index[k] - base)] = k;
+  }
+  return std::nullopt;
+}
+
+// Which field holds what; -1 = absent.
+struct Columns {
+  int x = -1, y = -1, index = -1, r = -1;
+};
+
+Columns columns_of_layout(const std::string& layout) {
+  if (layout == "x y") return {0, 1, -1, -1};
+  if (layout == "x y r") return {0, 1, -1, 2};
+  return {1, 2, 0, -1};  // "i x y"
+}
+
+// Three numbers a line: "x y r" when the third is one radius > 0 throughout, else "i x y" when
+// the first is a permutation, else neither (the error names both readings).
+std::string guess_three_columns(const std::vector<Row>& rows) {
+  const auto as_radius = radius_problem(rows, 2);
+  if (!as_radius) return "x y r";
+  const auto as_index = index_problem(rows, 0);
+  if (!as_index) return "i x y";
+  throw InputError("3 columns read neither as 'x y r' (" + *as_radius + ") nor as 'i x y' (" +
+                   *as_index + "); a comment line '# layout: x y r' or '# layout: i x y' decides");
+}
+
+// The points of `rows` by `columns`: ordered by the index column when there is one; the radius
+// column must hold one value > 0.
+PointsFile assemble(const std::vector<Row>& rows, const Columns& columns) {
+  PointsFile file;
+  if (rows.empty()) return file;
+  std::vector<std::size_t> order(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) order[k] = k;
+  if (columns.index >= 0)
+    if (auto problem = index_problem(rows, columns.index, &order)) throw InputError(*problem);
+  if (columns.r >= 0) {
+    if (auto problem = radius_problem(rows, columns.r)) throw InputError(*problem);
+    file.radius = real_at(rows.front(), columns.r);
+  }
+  for (std::size_t k : order)
+    file.points.push_back({coordinate_at(rows[k], columns.x), coordinate_at(rows[k], columns.y)});
+  return file;
+}
+
+PointsFile read_text(std::istream& in, bool records) {
+  const Scanned s = scan(in, 0);
+  // Who decided the layout, for the error messages.
+  std::string layout, decided_by;
+  if (s.layout) {
+    layout = *s.layout;
+    decided_by = "as " + at_line(s.layout_line) + " says";
+  } else if (records) {
+    layout = "i x y";
+    decided_by = "a records file";
+  }
+  if (!s.rows.empty()) {
+    const Row& first = s.rows.front();
+    const std::size_t width = layout.empty() ? first.fields.size() : (layout == "x y" ? 2 : 3);
+    if (layout.empty() && width != 2 && width != 3)
+      throw InputError(at_line(first.line) + ": expected 2 or 3 numbers ('x y', 'x y r' or " +
+                       "'i x y'), got " + std::to_string(width));
+    for (const auto& row : s.rows) {
+      if (row.fields.size() != width)
+        throw InputError(
+            at_line(row.line) + ": expected " + std::to_string(width) + " numbers (" +
+            (layout.empty() ? "like " + at_line(first.line) : "'" + layout + "', " + decided_by) +
+            "), got " + std::to_string(row.fields.size()));
+      for (std::size_t c = 0; c < width; ++c) real_at(row, static_cast<int>(c));
+    }
+    if (layout.empty()) layout = width == 2 ? "x y" : guess_three_columns(s.rows);
+  } else if (layout.empty()) {
+    layout = "x y";
+  }
+  PointsFile file = assemble(s.rows, columns_of_layout(layout));
+  file.layout = layout;
+  file.declared_d = s.declared_d;
+  return file;
+}
+
+// The column a CSV header name stands for.
+int* role_of(const std::string& name, Columns& c) {
+  if (name == "x") return &c.x;
+  if (name == "y") return &c.y;
+  if (name == "index" || name == "i" || name == "id") return &c.index;
+  if (name == "r" || name == "radius") return &c.r;
+  return nullptr;  // rattler flags and unknown columns are not needed for the points
+}
+
+PointsFile read_csv(std::istream& in) {
+  Scanned s = scan(in, ',');
+  PointsFile file;
+  file.layout = "csv";
+  file.declared_d = s.declared_d;
+  if (s.rows.empty()) return file;
+  const Row& first = s.rows.front();
+  const bool has_header = std::any_of(first.fields.begin(), first.fields.end(), [](auto& f) {
+    long double v = 0;
+    return !parse_real(f, v);
+  });
+  Columns columns;
+  std::vector<Row> data(s.rows.begin() + (has_header ? 1 : 0), s.rows.end());
+  if (has_header) {
+    for (std::size_t c = 0; c < first.fields.size(); ++c) {
+      const std::string name = lowercase(first.fields[c]);
+      int* role = role_of(name, columns);
+      if (!role) continue;
+      if (*role >= 0) throw InputError(at_line(first.line) + ": two columns name '" + name + "'");
+      *role = static_cast<int>(c);
+    }
+    if (columns.x < 0 || columns.y < 0)
+      throw InputError(at_line(first.line) + ": the header names no '" +
+                       (columns.x < 0 ? "x" : "y") + "' column");
+  } else if (first.fields.size() == 2) {
+    columns = {0, 1, -1, -1};
+  } else if (first.fields.size() == 3) {
+    for (const auto& row : data)
+      if (row.fields.size() != 3)
+        throw InputError(at_line(row.line) + ": " + std::to_string(row.fields.size()) +
+                         " fields, expected 3 like " + at_line(first.line));
+    columns = columns_of_layout(guess_three_columns(data));
+  } else if (first.fields.size() == 4) {
+    columns = {1, 2, 0, -1};  // the writer's index,x,y,rattler
+  } else {
+    throw InputError(at_line(first.line) + ": expected 'x,y' or 'index,x,y[,rattler]', got " +
+                     std::to_string(first.fields.size()) + " fields and no header");
+  }
+  for (const auto& row : data)
+    if (row.fields.size() != first.fields.size())
+      throw InputError(at_line(row.line) + ": " + std::to_string(row.fields.size()) +
+                       " fields, expected " + std::to_string(first.fields.size()) + " like " +
+                       at_line(first.line));
+  PointsFile points = assemble(data, columns);
+  file.points = std::move(points.points);
+  file.radius = points.radius;
+  return file;
+}
+
+// number_float_t = long double: the parser then reads 21-digit numbers without rounding them to
+// double first.
+using LongJson = nlohmann::basic_json<std::map, std::vector, std::string, bool, std::int64_t,
+                                      std::uint64_t, long double>;
+
+// A number, or a decimal string (how JSON carries digits beyond a double's).
+std::optional<long double> json_real(const LongJson& v) {
+  long double x = 0;
+  if (v.is_number()) return v.get<long double>();
+  if (v.is_string() && parse_real(v.get<std::string>(), x)) return x;
+  return std::nullopt;
+}
+
+long double json_coordinate(const LongJson& v, const std::string& where) {
+  const auto x = json_real(v);
+  if (!x) throw InputError(where + ": a coordinate is neither a number nor a decimal string");
+  if (!std::isfinite(*x)) throw InputError(where + ": coordinate is not a finite number");
+  return *x;
+}
+
+std::vector<Vec2L> json_point_list(const LongJson& list) {
+  std::vector<Vec2L> pts;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const auto& p = list[k];
+    const std::string where = "point " + std::to_string(k);
+    if (p.is_array() && p.size() == 2)
+      pts.push_back({json_coordinate(p[0], where), json_coordinate(p[1], where)});
+    else if (p.is_object() && p.contains("x") && p.contains("y"))
+      pts.push_back({json_coordinate(p["x"], where), json_coordinate(p["y"], where)});
+    else
+      throw InputError(where + ": expected [x, y] or {\"x\": .., \"y\": ..}");
+  }
   return pts;
 }
 
-std::vector<Vec2L> read_json_points(std::istream& in) {
-  nlohmann::json j;
+PointsFile read_json(std::istream& in) {
+  LongJson j;
   try {
     in >> j;
   } catch (const std::exception& e) {
     throw InputError(std::string("malformed JSON: ") + e.what());
   }
+  PointsFile file;
+  // write_json's d, checked against the points like a "# d:" header line.
+  if (j.is_object() && j.contains("d"))
+    if (const auto d = json_real(j["d"]); d && *d > 0 && std::isfinite(*d)) file.declared_d = d;
+  if (j.is_array()) {
+    file.layout = "json list";
+    file.points = json_point_list(j);
+    return file;
+  }
   if (!j.is_object() || !j.contains("points") || !j["points"].is_array())
-    throw InputError("JSON has no \"points\" array");
+    throw InputError("JSON has no \"points\" array (nor is it a list of points)");
   const bool exact = j.contains("points_exact") && j["points_exact"].is_array() &&
                      j["points_exact"].size() == j["points"].size();
-  std::vector<Vec2L> pts;
-  std::size_t idx = 0;
-  for (const auto& p : exact ? j["points_exact"] : j["points"]) {
-    const std::string where = "point " + std::to_string(idx++);
-    auto value = [&](const nlohmann::json& v) -> long double {
-      if (v.is_number()) return v.get<double>();
-      if (v.is_string()) {
-        try {
-          std::size_t used = 0;
-          const auto s = v.get<std::string>();
-          const long double x = std::stold(s, &used);
-          if (used == s.size()) return x;
-        } catch (...) {
-        }
-      }
-      throw InputError(where + ": expected [x, y]");
-    };
-    if (!p.is_array() || p.size() != 2) throw InputError(where + ": expected [x, y]");
-    pts.push_back(checked_point(value(p[0]), value(p[1]), where));
-  }
-  return pts;
+  file.layout = "json points";
+  file.points = json_point_list(exact ? j["points_exact"] : j["points"]);
+  return file;
 }
 
 }  // namespace
 
-std::vector<Vec2L> read_points(std::istream& in, FileFormat format) {
+PointsFile read_points(std::istream& in, FileFormat format) {
   switch (format) {
     case FileFormat::Text:
-      return read_rows(in, false);
+      return read_text(in, false);
+    case FileFormat::Records:
+      return read_text(in, true);
     case FileFormat::Csv:
-      return read_rows(in, true);
+      return read_csv(in);
     case FileFormat::Json:
-      return read_json_points(in);
+      return read_json(in);
   }
   return {};
 }
 
-std::vector<Vec2L> read_points_file(const std::string& path) {
+PointsFile read_points_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot read '" + path + "'");
   try {

@@ -1,20 +1,24 @@
-// Reading and writing packings: plain "x y" text, CSV and JSON.
+// Reading and writing packings: "x y" text, the record tables' "i x y", CSV and JSON.
 // Coordinates are written with 21 significant digits (round-trip exact for long double) in text
 // and CSV; JSON numbers are doubles (17 digits), so JSON also carries them as strings.
 #pragma once
 
 #include <iosfwd>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/packing.hpp"
 
 namespace tripack {
 
-enum class FileFormat { Text, Csv, Json };
+// Records: "i x y" lines with a "#" header (the record tables' layout, SPEC §9).
+enum class FileFormat { Text, Csv, Json, Records };
 
-// Chosen by extension: .csv -> CSV, .json -> JSON, anything else -> text.
+// Chosen by extension: .csv -> CSV, .json -> JSON, .pck and .records -> records, anything else
+// -> text.
 FileFormat format_from_path(const std::string& path);
 
 // Thrown on unreadable or malformed input; the message is one line naming the place.
@@ -30,13 +34,57 @@ void write_csv(std::ostream& out, const Pattern& pattern);
 //        "points": [[x, y], ...] (numbers), "points_exact": [["x", "y"], ...] (21-digit strings),
 //        "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}.
 void write_json(std::ostream& out, const Pattern& pattern);
+
+// A record table: every real number is a decimal string formatted by the caller, so digits
+// beyond long double (an MPFR polish) reach the file unchanged.
+struct RecordsTable {
+  std::string label;       // the packing's name (t22a); may be empty
+  std::string class_name;  // e.g. "even-ripple k=3"; may be empty
+  std::string d;           // minimum distance of the centres in the side-1 triangle
+  std::string r;           // radius of n circles in the side-1 triangle
+  std::string S;           // side of the smallest triangle holding n unit circles
+  std::string L;           // 1 / d
+  std::size_t bonds = 0;
+  std::vector<int> rattlers;                                // 0-based disk indices
+  std::vector<std::pair<std::string, std::string>> points;  // centres in the unit triangle
+};
+// Formats a pattern's numbers from long double with `digits` significant digits (capped at 21,
+// a long double's round trip). The label is left empty: ranking packings is the caller's job.
+RecordsTable records_table(const Pattern& pattern, int digits);
+// "# key: value" header lines (n, label, class, d, r, S, L, bonds, rattlers, the convention and
+// "# layout: i x y"), then one "i x y" line per disk, i 0-based.
+void write_records(std::ostream& out, const RecordsTable& table);
+
+// By extension; records are written with 17 significant digits.
 void write_pattern(const std::string& path, const Pattern& pattern);
 
-// Reads points (any of the three formats; JSON needs a "points" array). No validation beyond
-// syntax and finiteness: geometry checks belong to the caller.
-// JSON prefers "points_exact" when present.
-std::vector<Vec2L> read_points(std::istream& in, FileFormat format);
-std::vector<Vec2L> read_points_file(const std::string& path);
+// What a points file holds. No validation beyond syntax and finiteness: geometry belongs to
+// packing_from_points (core/points.hpp).
+struct PointsFile {
+  std::vector<Vec2L> points;  // in file order, or ordered by index when the file has an index
+  std::optional<long double> radius;      // an "x y r" file: circles of this radius (radius
+                                          // convention implied)
+  std::optional<long double> declared_d;  // a "# d: value" header line or JSON "d", if any
+  std::string layout;  // "x y", "x y r", "i x y", "csv", "json points", "json list"
+};
+
+// Layouts read:
+//  * text: "x y"; "x y r" (r the same > 0 on every line); "i x y" (the indices a permutation of
+//    0..n-1 or 1..n, in any order). Three columns read as "x y r" when the third is constant and
+//    > 0, else as "i x y" when the first is a permutation, else an error naming both readings;
+//    a comment line "# layout: x y r" (or "i x y", "x y") decides instead. "#" comments and
+//    blank lines are skipped.
+//  * records: text whose three columns are "i x y" (unless a layout comment says otherwise).
+//  * CSV: a header naming the columns (x, y; optional index/i/id, r/radius, rattler; others
+//    ignored; any order, any case) or none: then "x,y", three columns told apart as in text, or
+//    "index,x,y,rattler". An index column orders the points; an r column gives the radius.
+//  * JSON: {"points": [[x, y], ...]} (preferring "points_exact" of the same length), or
+//    {"points": [{"x": .., "y": ..}, ...]}, or a bare list of either; numbers or decimal
+//    strings, read to long double.
+// Errors are InputError, one line naming the file line (JSON: the point's position).
+PointsFile read_points(std::istream& in, FileFormat format);
+// As above, the format from the extension; errors are prefixed with the path.
+PointsFile read_points_file(const std::string& path);
 
 // Decimal string of a long double with `digits` significant digits.
 std::string format_significant(long double value, int digits);

@@ -7,6 +7,7 @@
 
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
+#include "core/points.hpp"
 #include "pipeline/timing.hpp"
 
 namespace tripack::pipeline {
@@ -64,58 +65,6 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   return a;
 }
 
-Packing packing_from_points(std::vector<Vec2L> pts, Convention c,
-                            std::optional<long long> expected_n) {
-  if (expected_n && static_cast<long long>(pts.size()) != *expected_n)
-    throw InputError(fmt::format("expected {} points, the file has {}", *expected_n, pts.size()));
-  if (pts.size() < 2)
-    throw InputError(fmt::format("need at least 2 points, the file has {}", pts.size()));
-  if (c == Convention::UnitTriangle) {
-    // Centres must lie in the unit triangle; 1e-9 forgives coordinates printed to ~10 digits.
-    for (std::size_t i = 0; i < pts.size(); ++i)
-      for (Side s : kSides)
-        if (wall_distance(pts[i], s, 1.0L) < -1e-9L)
-          throw InputError(fmt::format(
-              "point {} ({}, {}) is outside the unit triangle (beyond its {} side)", i,
-              static_cast<double>(pts[i].x), static_cast<double>(pts[i].y), side_name(s)));
-  } else {
-    // Circles in a container: their centres span a smaller triangle of the same orientation,
-    // bounded by y = ymin, sqrt3 x - y = cl and sqrt3 x + y = cr. Map it onto the unit triangle.
-    long double ymin = pts[0].y, cl = kSqrt3 * pts[0].x - pts[0].y,
-                cr = kSqrt3 * pts[0].x + pts[0].y;
-    for (const auto& p : pts) {
-      ymin = std::min(ymin, p.y);
-      cl = std::min(cl, kSqrt3 * p.x - p.y);
-      cr = std::max(cr, kSqrt3 * p.x + p.y);
-    }
-    const long double side = (cr - cl - 2 * ymin) / kSqrt3;
-    if (!(side > 0)) throw InputError("the points do not span a triangle");
-    const Vec2L corner{(cl + ymin) / kSqrt3, ymin};
-    for (auto& p : pts) p = (p - corner) / side;
-  }
-  Packing pk;
-  pk.points = std::move(pts);
-  // Coinciding points make d zero: reject them, naming the pair.
-  long double closest = std::numeric_limits<long double>::infinity();
-  int ci = -1, cj = -1;
-  for_each_pair_within(pk.points, 1e-12L, [&](int i, int j, long double r) {
-    if (r < closest) {
-      closest = r;
-      ci = i;
-      cj = j;
-    }
-  });
-  if (ci >= 0) throw InputError(fmt::format("points {} and {} coincide", ci, cj));
-  for (long double r = 0.25L;; r *= 2) {
-    const long double m = min_pair_distance(pk.points, r);
-    if (std::isfinite(m)) {
-      pk.d = m;
-      break;
-    }
-  }
-  return pk;
-}
-
 namespace {
 
 const MultiprecisionPolish* high_digits(const Analysis& a, int wanted) {
@@ -147,12 +96,16 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   result.file = request.file;
   result.digits = request.digits;
   const auto start = Clock::now();
-  result.convention = request.convention.value_or(Convention::UnitTriangle);
-  Packing packing =
-      packing_from_points(read_points_file(request.file), result.convention, request.expected_n);
-  result.layout = "x y";
+  PointsFile file = read_points_file(request.file);
+  result.layout = file.layout;
+  // An x y r file implies the radius convention.
+  result.convention =
+      request.convention.value_or(file.radius ? Convention::Radius : Convention::UnitTriangle);
+  PointsReading reading =
+      packing_from_points(std::move(file), request.convention, request.expected_n);
+  result.warnings = std::move(reading.warnings);
   result.read_seconds = seconds_since(start);
-  result.analysis = analyze_packing(packing, {request.digits});
+  result.analysis = analyze_packing(reading.packing, {request.digits});
   const auto& mp = result.analysis.multiprecision;
   if (mp && mp->converged && result.convention != Convention::UnitTriangle)
     result.mp_value_in_convention =

@@ -47,12 +47,6 @@ struct Analysis {
 
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options);
 
-// Points read from a file, in convention `c`, to a packing in the unit triangle. Throws
-// InputError (one line) for fewer than two points, a count other than `expected_n`, points
-// outside the unit triangle (unit-triangle convention), or coinciding points.
-Packing packing_from_points(std::vector<Vec2L> points, Convention c,
-                            std::optional<long long> expected_n);
-
 // `tripack analyze FILE`: points read in any layout, converted to the unit triangle, analysed.
 struct AnalyzeRequest {
   std::string file;

@@ -95,7 +95,7 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
     std::filesystem::path path(file);
     if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
     try {
-      s.points = read_points_file(path.string());
+      s.points = read_points_file(path.string()).points;
     } catch (const std::exception& e) {
       fail(std::string("initial file: ") + e.what());
     }
@@ -143,9 +143,6 @@ void validate_scene(const Scene& s) {
       if (!(st.rate > 0 && std::isfinite(st.rate)))
         fail("growth.schedule rate must be finite and > 0");
     }
-  // Random points start at diameter 0: without growth nothing would ever happen until max_seconds.
-  if (s.points.empty() && !(s.growth && s.growth->rate > 0))
-    fail("a random start has disks of diameter 0: it needs growth with a rate > 0");
   if (s.shake && s.shake->per_disk == 0) fail("shake.per_disk must be at least 1");
   if (s.shake && !(s.shake->rattler_factor > 1 && std::isfinite(s.shake->rattler_factor)))
     fail("shake.rattler_factor must be finite and > 1");
@@ -157,6 +154,9 @@ void validate_scene(const Scene& s) {
   if (st.max_events == 0) fail("stop.max_events must be > 0");
   for (int i : s.pinned)
     if (i < 0 || i >= s.n) fail("pinned index " + std::to_string(i) + " out of range");
+  // Random points start at diameter 0: without growth nothing would ever happen until max_seconds.
+  if (s.points.empty() && !(s.growth && s.growth->rate > 0))
+    fail("a random start has disks of diameter 0: it needs growth with a rate > 0");
   if (s.points.empty()) return;
   if (!(s.start_d >= 0 && std::isfinite(s.start_d))) fail("initial d must be finite and >= 0");
   const long double tol = 1e-12L;

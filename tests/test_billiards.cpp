@@ -314,9 +314,10 @@ effects:
   free.pinned.clear();
   const BilliardsResult f = run_billiards(free, rng);
   EXPECT_NEAR(static_cast<double>(f.packing.d), 1.0, 1e-9);
-  const Scene plain = parse_scene("n: 5");
-  EXPECT_FALSE(plain.growth);
-  EXPECT_TRUE(plain.points.empty());
+  // A random start without growth stays at diameter 0 forever: refused, not run to max_seconds.
+  EXPECT_THROW(parse_scene("n: 5"), std::runtime_error);
+  EXPECT_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0}}"), std::runtime_error);
+  EXPECT_NO_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}}"));
 }
 
 TEST(Billiards, SceneParsesScheduleShakeAndPattern) {

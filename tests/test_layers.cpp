@@ -51,8 +51,8 @@ std::vector<std::string> layer_violations(const fs::path& root) {
         std::smatch m;
         if (std::regex_search(line, m, include_line) && allowed_includes().count(m[1]) &&
             !allowed.count(m[1]))
-          found.push_back(fs::relative(entry.path(), root).string() + ":" +
-                          std::to_string(number) + " includes " + m[1].str() + "/");
+          found.push_back(fs::relative(entry.path(), root).string() + ":" + std::to_string(number) +
+                          " includes " + m[1].str() + "/");
       }
     }
   }
@@ -63,8 +63,8 @@ TEST(Layers, EveryIncludePointsDown) {
   const auto violations = layer_violations(TRIPACK_SOURCE_DIR);
   for (const auto& v : violations) ADD_FAILURE() << v;
   // The check saw the tree: each layer directory exists.
-  for (const char* layer : {"core", "polish", "constructors", "analysis", "sim", "pipeline",
-                            "report", "app"})
+  for (const char* layer :
+       {"core", "polish", "constructors", "analysis", "sim", "pipeline", "report", "app"})
     EXPECT_TRUE(fs::is_directory(fs::path(TRIPACK_SOURCE_DIR) / layer)) << layer;
 }
 
@@ -74,7 +74,8 @@ TEST(Layers, APlantedUpwardIncludeIsCaught) {
   for (const char* dir : {"core", "sim", "report", "app"}) fs::create_directories(root / dir);
   std::ofstream(root / "core" / "bad.hpp") << "#include \"analysis/relax.hpp\"\n";
   std::ofstream(root / "sim" / "bad.cpp") << "  #  include \"constructors/registry.hpp\"\n";
-  std::ofstream(root / "report" / "ok.cpp") << "#include \"pipeline/build.hpp\"\n#include <cmath>\n";
+  std::ofstream(root / "report" / "ok.cpp")
+      << "#include \"pipeline/build.hpp\"\n#include <cmath>\n";
   std::ofstream(root / "app" / "ok.cpp") << "#include \"report/render.hpp\"\n";
   const auto violations = layer_violations(root);
   fs::remove_all(root);
