@@ -132,5 +132,116 @@ fi
 # A scene file runs; t7a has d = 1/(1+sqrt3) = 0.366025403784439 (GL1995 Fig.t7).
 expect_output "billiards scene t7" "0.366025403784439" billiards --scene "$DATA/scenes/t7.yaml" --runs 10
 
+# Every input layout of t22a reads to the same packing: d(22) = 0.179396908611866 (GL1995
+# Fig.t22), certified (tests/data/layouts/make.py writes them from tripack's own t22a).
+LAYOUTS="$DATA/layouts"
+for f in t22a.xy.txt t22a.xyr.txt t22a.ixy.txt t22a.header.csv t22a.points.json t22a.list.json t22a.pck; do
+  expect_output "analyze layout $f" "0.179396908611866" analyze "$LAYOUTS/$f"
+done
+expect_output "x y r implies the radius convention" '"convention":"radius"' analyze "$LAYOUTS/t22a.xyr.txt" --json
+expect_output "i x y layout named" '"layout":"i x y"' analyze "$LAYOUTS/t22a.ixy.txt" --json
+# r = d / (2 (1 + sqrt3 d)) of d(22) to 40 digits (mpmath from the closed form in CONSTRUCTIONS):
+# 0.06843425156850538244567369271218...; --digits 30 carries it through MPFR.
+expect_output "r with --digits 30" "r          0.0684342515685053824456736927122" analyze "$LAYOUTS/t22a.xyr.txt" --digits 30
+
+# expect_warning "description" "needle in the one stderr line" "needle in stdout" args...: exit 0.
+expect_warning() {
+  local what=$1 needle=$2 out_needle=$3
+  shift 3
+  local err out rc lines
+  err=$(mktemp)
+  out=$("$TRIPACK" "$@" 2>"$err")
+  rc=$?
+  lines=$(wc -l <"$err")
+  if [ "$rc" -eq 0 ] && [ "$lines" -eq 1 ] && grep -qi -- "$needle" "$err" && grep -qF -- "$out_needle" <<<"$out"; then
+    pass=$((pass + 1))
+  else
+    fail=$((fail + 1))
+    echo "FAIL: $what: rc=$rc, stderr: $(cat "$err"), stdout: $out"
+  fi
+  rm -f "$err"
+}
+# Rounded to 6 decimals: 4 points lie up to 1.6e-7 outside; accepted with one warning, and relax
+# recovers d to 15 digits.
+expect_warning "rounded input" "outside the unit triangle by up to 1.6e-07" "0.179396908611866" analyze "$LAYOUTS/t22a.rounded6.txt"
+expect_error "beyond the rounding tolerance" "0.001 outside the unit triangle" analyze "$LAYOUTS/t22a.bad-outside.txt"
+expect_error "flipped unit-triangle file" "upside down" analyze "$LAYOUTS/t22a.bad-flipped.txt"
+expect_warning "upside-down container" "upside down" "0.179396908611866" analyze "$LAYOUTS/t22a.upside-down.txt" --convention radius
+expect_warning "transposed container" "quarter turn" "0.179396908611866" analyze "$LAYOUTS/t22a.transposed.txt" --convention radius
+expect_error "ambiguous orientation" "orientation" analyze "$LAYOUTS/hexagon.bad-orientation.txt" --convention radius
+expect_error "x y r with another convention" "so its convention is radius" analyze "$LAYOUTS/t22a.xyr.txt" --convention unit-disk-side
+expect_error "radius varies" "differs" analyze "$LAYOUTS/t22a.bad-radius-varies.txt"
+expect_error "index repeats" "repeats" analyze "$LAYOUTS/t22a.bad-index-repeats.txt"
+expect_error "csv without y" "no 'y' column" analyze "$LAYOUTS/t22a.bad-no-y.csv"
+
+# Export for the record tables: i x y lines, d, r and S in the header, with --digits.
+tmp=$(mktemp -d)
+"$TRIPACK" build even-ripple --k 3 --digits 30 -o "$tmp/t22a.pck" >/dev/null
+if grep -q '^# d: 0.179396908611865979561218847051$' "$tmp/t22a.pck" && grep -q '^# r: 0.0684342515685053824456736927122$' "$tmp/t22a.pck" &&
+  grep -q '^# S: 14.6125657412788477036406723266$' "$tmp/t22a.pck" && [ "$(grep -vc '^#' "$tmp/t22a.pck")" -eq 22 ] &&
+  grep -q '^0 0.5000000000000000000000000000' "$tmp/t22a.pck"; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: records export: $(head -12 "$tmp/t22a.pck")"
+fi
+expect_output "records read back" "0.179396908611866" analyze "$tmp/t22a.pck"
+rm -rf "$tmp"
+
+# With --json an error is one JSON object on stdout too (and one line on stderr).
+out=$("$TRIPACK" build nonsense --k 2 --json 2>/dev/null)
+if [ "$out" = '{"error":"unknown class '"'"'nonsense'"'"'"}' ] || grep -q '^{"error":"unknown class' <<<"$out"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: json error: $out"; fi
+expect_error "json error keeps one stderr line" "unknown class" build nonsense --k 2 --json
+out=$("$TRIPACK" analyze /nonexistent.txt --json 2>/dev/null)
+if grep -q '^{"error":"cannot read' <<<"$out"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: json error analyze: $out"; fi
+out=$("$TRIPACK" billiards 0 --json 2>/dev/null)
+if grep -q '^{"error":' <<<"$out"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: json parse error: $out"; fi
+# Every command's JSON is one object with a total "seconds".
+for args in "classes" "classify 12" "build four-delta --k 2" "check-formula four-delta --k 1..3" "table --kmax 1" "billiards 7 --runs 2" "analyze $LAYOUTS/t22a.xy.txt"; do
+  # shellcheck disable=SC2086
+  expect_output "json seconds: $args" '"seconds":' $args --json
+done
+expect_output "table --json rows" '"rows":[' table --kmax 1 --json
+
+# build --n: the candidates are part of the result (stdout), nothing on stderr.
+err=$("$TRIPACK" build --n 22 2>&1 >/dev/null)
+if [ -z "$err" ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --n wrote to stderr: $err"; fi
+expect_output "build --n candidates" "candidate  matrix k=1 p=3" build --n 22
+
+# billiards -o DIR: one file per distinct packing, named by its label, that reads back.
+tmp=$(mktemp -d)
+"$TRIPACK" billiards 22 --runs 8 --threads 2 -o "$tmp/found" --format pck >"$tmp/out.txt" 2>/dev/null
+labels=$(sed -n '/^distinct packings/,$p' "$tmp/out.txt" | awk 'NR > 1 {print $1}')
+files=$(cd "$tmp/found" && ls | sed 's/\.pck$//')
+if [ -n "$labels" ] && [ "$(sort <<<"$labels")" = "$(sort <<<"$files")" ] && grep -q '^# label: t22a$' "$tmp/found/t22a.pck"; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: billiards -o: labels [$labels] files [$files]"
+fi
+expect_output "billiards -o file reads back" "0.179396908611866" analyze "$tmp/found/t22a.pck"
+expect_error "billiards -o unwritable" "cannot write to directory" billiards 7 --runs 1 -o /proc/nonexistent
+expect_error "billiards --format unknown" "--format" billiards 7 --runs 1 -o "$tmp/x" --format xls
+expect_output "billiards --json --points" '"points":[["' billiards 7 --runs 2 --json --points
+rm -rf "$tmp"
+
+# More than 40 distinct packings (fast growth at n = 80): labels stay valid and unique past z
+# (t80a .. t80z, t80aa, ...), and the JSON is valid.
+csv=$("$TRIPACK" billiards --scene "$DATA/scenes/many_distinct.yaml" --runs 60 --threads 2 --csv 2>/dev/null)
+total=$(tail -n +2 <<<"$csv" | cut -d, -f3 | wc -l)
+unique=$(tail -n +2 <<<"$csv" | cut -d, -f3 | sort -u | wc -l)
+valid=$(tail -n +2 <<<"$csv" | cut -d, -f3 | grep -c '^t80[a-z]\+\([0-9]\+\)\?\(\.[0-9]\+\)\?$')
+out=$("$TRIPACK" billiards --scene "$DATA/scenes/many_distinct.yaml" --runs 60 --threads 2 --json 2>/dev/null)
+rc=$?
+if [ "$total" -gt 40 ] && [ "$total" -eq "$unique" ] && [ "$valid" -eq "$total" ] && [ "$rc" -eq 0 ] &&
+  grep -q '"label":"t80aa' <<<"$out" && tail -n +2 <<<"$csv" | cut -d, -f3 | grep -qx 't80aa'; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: many distinct packings: $total labels, $unique unique, $valid valid, json rc $rc"
+fi
+# A random start without growth would run to max_seconds doing nothing: refused in one line.
+expect_error "zero growth scene" "needs growth with a rate > 0" billiards --scene "$DATA/scenes/zero_growth.yaml"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <vector>
 
 #include "analysis/compare.hpp"
@@ -11,6 +12,7 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
+#include "pipeline/billiards_search.hpp"
 #include "sim/billiards.hpp"
 
 namespace tripack::pipeline {
@@ -215,6 +217,68 @@ TEST(Pipeline, ShakingNamesTheRattlersTheAnalysisFinds) {
     EXPECT_EQ(r.shake_rattlers, built.rattlers) << req.class_id;
     EXPECT_LE(r.max_overlap, 1e-12) << req.class_id;
   }
+}
+
+}  // namespace
+}  // namespace tripack::pipeline
+
+namespace tripack::pipeline {
+namespace {
+
+TEST(Labels, RankLettersContinuePastZ) {
+  // Bijective base 26: a..z, then aa..az, ba.., zz, aaa; every rank has one label, all distinct.
+  EXPECT_EQ(rank_letters(0), "a");
+  EXPECT_EQ(rank_letters(25), "z");
+  EXPECT_EQ(rank_letters(26), "aa");
+  EXPECT_EQ(rank_letters(27), "ab");
+  EXPECT_EQ(rank_letters(51), "az");
+  EXPECT_EQ(rank_letters(52), "ba");
+  EXPECT_EQ(rank_letters(701), "zz");
+  EXPECT_EQ(rank_letters(702), "aaa");
+  std::set<std::string> seen;
+  for (std::size_t r = 0; r < 20000; ++r) {
+    const std::string s = rank_letters(r);
+    EXPECT_TRUE(std::all_of(s.begin(), s.end(), [](char c) { return c >= 'a' && c <= 'z'; }));
+    EXPECT_TRUE(seen.insert(s).second) << s;
+  }
+}
+
+TEST(Labels, SharedDGetsBondCountsAndSharedBondsGetSuffixes) {
+  // The paper's naming (GL1995): t17a40, t17a42 share d; t31a81.1, t31a81.2 share d and bonds.
+  const std::vector<RankKey> keys{
+      {0.30L, 42}, {0.30L * (1 - 1e-14L), 40}, {0.29L, 40}, {0.28L, 81}, {0.28L, 81}, {0.27L, 30}};
+  const auto labels = paper_labels(17, keys);
+  EXPECT_EQ(labels,
+            (std::vector<std::string>{"t17a42", "t17a40", "t17b", "t17c81.1", "t17c81.2", "t17d"}));
+  // Fifty ranks: the 27th is t17aa.
+  std::vector<RankKey> many;
+  for (int i = 0; i < 50; ++i) many.push_back({1.0L - i * 1e-3L, 10});
+  const auto long_labels = paper_labels(17, many);
+  EXPECT_EQ(long_labels[25], "t17z");
+  EXPECT_EQ(long_labels[26], "t17aa");
+  EXPECT_EQ(std::set<std::string>(long_labels.begin(), long_labels.end()).size(), 50u);
+}
+
+TEST(BilliardsSearch, RankingDoesNotDependOnThreads) {
+  // Run r uses seed + r whatever thread runs it, and ties are broken by bonds then seed: one and
+  // two threads give the same labels, d and counts (n = 22: t22a d = 0.179396908611866, GL1995).
+  BilliardsSearch search;
+  search.scene = default_scene(22);
+  search.runs = 12;
+  const auto one = search_billiards(search);
+  search.threads = 2;
+  const auto two = search_billiards(search);
+  ASSERT_EQ(one.packings.size(), two.packings.size());
+  for (std::size_t i = 0; i < one.packings.size(); ++i) {
+    EXPECT_EQ(one.packings[i].label, two.packings[i].label);
+    EXPECT_EQ(one.packings[i].pattern.packing.d, two.packings[i].pattern.packing.d);
+    EXPECT_EQ(one.packings[i].runs, two.packings[i].runs);
+  }
+  for (std::size_t r = 0; r < one.runs.size(); ++r) EXPECT_EQ(one.runs[r].label, two.runs[r].label);
+  ASSERT_FALSE(one.packings.empty());
+  EXPECT_EQ(one.packings.front().label, "t22a");
+  EXPECT_NEAR(static_cast<double>(one.packings.front().pattern.packing.d), 0.179396908611866,
+              1e-14);
 }
 
 }  // namespace
