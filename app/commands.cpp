@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
+#include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -15,7 +18,11 @@
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/compare.hpp"
+#include "pipeline/explore.hpp"
+#include "report/diagram.hpp"
+#include "report/explore_report.hpp"
 #include "report/packing_file.hpp"
+#include "report/plot.hpp"
 
 namespace tripack::app {
 
@@ -120,6 +127,20 @@ void write_distinct_packings(const pipeline::BilliardsSearchResult& result,
                                x.label);
 }
 
+// The diagrams asked for with --svg/--png/--pdf.
+void draw_if_asked(const DiagramTargets& targets, const Pattern& pattern, const std::string& label,
+                   const std::vector<long double>& forces) {
+  report::Diagram diagram{pattern, label, format_significant(pattern.packing.d, 15), forces};
+  report::DiagramOptions options;
+  options.forces = targets.forces;
+  for (const auto* path : {&targets.svg, &targets.png, &targets.pdf})
+    if (!path->empty()) report::draw_packing(diagram, *path, options);
+}
+
+std::vector<long double> forces_of(const std::optional<pipeline::Analysis>& analysis) {
+  return analysis ? analysis->stress.forces : std::vector<long double>{};
+}
+
 }  // namespace
 
 int cmd_classes(const GlobalOptions& g, const OutputOptions& out) {
@@ -154,6 +175,9 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
                                                               : nullptr;
     report::write_packing_file(o.output, b.pattern, o.digits, mp);
   }
+  const auto& b = result.best;
+  draw_if_asked(o.diagrams, b.analysis ? b.analysis->pattern : b.pattern,
+                pipeline::member_name(b.pattern.provenance), forces_of(b.analysis));
   return 0;
 }
 
@@ -190,6 +214,8 @@ int cmd_analyze(const AnalyzeOptions& o) {
     const auto& mp = result.analysis.multiprecision;
     report::write_packing_file(o.output, result.analysis.pattern, o.digits, mp ? &*mp : nullptr);
   }
+  draw_if_asked(o.diagrams, result.analysis.pattern,
+                std::filesystem::path(o.file).filename().string(), result.analysis.stress.forces);
   return 0;
 }
 
@@ -202,6 +228,13 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   // Files first: what was found is kept even if printing fails.
   if (!dir.empty()) write_distinct_packings(result, dir, o.file_format);
   print_result(result, o.out);
+  if (!result.packings.empty()) {
+    const auto& best = result.packings.front();
+    std::vector<long double> forces;
+    for (const auto& run : result.runs)
+      if (run.seed == best.first_seed) forces = forces_of(run.analysis);
+    draw_if_asked(o.diagrams, best.pattern, best.label, forces);
+  }
   return 0;
 }
 
@@ -212,6 +245,105 @@ int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   const auto result = pipeline::compare_constructed(catalogue, o.n, search, {});
   if (search.progress) std::cerr << "\n";
   print_result(result, o.out);
+  return 0;
+}
+
+namespace {
+
+// Ctrl-C asks the explorer to stop between items; a second Ctrl-C ends the program at once.
+std::atomic<bool> explore_cancel{false};
+extern "C" void on_interrupt(int) {
+  if (explore_cancel.exchange(true)) std::_Exit(130);
+}
+
+// A progress bar with ETA on a terminal; elsewhere one line per stage.
+std::function<void(const pipeline::ExploreProgress&)> explore_progress_line() {
+  const bool tty = isatty(fileno(stderr));
+  return [tty, last_stage = std::string()](const pipeline::ExploreProgress& p) mutable {
+    if (!tty) {
+      if (p.stage != last_stage) std::cerr << fmt::format("explore: {} ({:.0f} s)\n", p.stage, p.elapsed);
+      last_stage = p.stage;
+      return;
+    }
+    const int width = 30;
+    const int filled = static_cast<int>(p.fraction * width + 0.5);
+    const double eta = p.fraction > 0.02 ? p.elapsed * (1 - p.fraction) / p.fraction : -1;
+    std::cerr << fmt::format("\r[{}{}] {:3.0f}% {:>5.0f} s, ETA {:>5}  {}: {:<40.40}",
+                             std::string(static_cast<std::size_t>(filled), '#'),
+                             std::string(static_cast<std::size_t>(width - filled), '.'),
+                             p.fraction * 100, p.elapsed,
+                             eta < 0 ? std::string("?") : fmt::format("{:.0f} s", eta), p.stage,
+                             p.item)
+              << std::flush;
+  };
+}
+
+}  // namespace
+
+int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
+  const Catalogue catalogue = load_catalogue(g);
+  pipeline::ExploreSettings settings;
+  settings.max_n = o.max_n;
+  settings.runs = o.runs;
+  settings.threads = o.threads;
+  settings.seed = o.seed;
+  report::find_gnuplot();  // before any work: a missing gnuplot is one line, not a lost hour
+  const std::filesystem::path dir(o.out);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || access(dir.c_str(), W_OK) != 0)
+    throw std::runtime_error("cannot write to directory '" + o.out + "'");
+  const double estimate = pipeline::estimated_explore_seconds(catalogue, settings);
+  if (estimate > 300)
+    std::cerr << fmt::format(
+        "tripack: warning: this exploration is estimated at ~{:.0f} minutes on 2 cores (the "
+        "defaults take about 5); Ctrl-C stops it with a consistent report of what finished\n",
+        estimate / 60);
+  explore_cancel = false;
+  std::signal(SIGINT, on_interrupt);
+  const auto result =
+      pipeline::explore(catalogue, settings, explore_cancel, explore_progress_line());
+  std::signal(SIGINT, SIG_DFL);
+  if (isatty(fileno(stderr))) std::cerr << "\n";
+  report::write_explore_report(result, dir, {}, [](const std::string& what) {
+    std::cerr << "explore: writing " << what << "\n";
+  });
+  std::cout << fmt::format("{} packings, {} comparisons in {:.1f} s; report: {}\n",
+                           result.packings.size(), result.comparisons.size(), result.seconds,
+                           (dir / "index.html").string());
+  if (result.interrupted) throw std::runtime_error("interrupted: the report holds what finished");
+  return 0;
+}
+
+int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
+  if (o.output.empty()) throw std::invalid_argument("draw needs -o FILE (.svg, .png or .pdf)");
+  report::Diagram diagram;
+  if (std::filesystem::is_regular_file(o.what)) {
+    pipeline::AnalyzeRequest request;
+    request.file = o.what;
+    if (!o.convention.empty()) {
+      request.convention = parse_convention(o.convention);
+      if (!request.convention) throw std::invalid_argument("unknown convention '" + o.convention + "'");
+    }
+    const auto result = pipeline::analyze_file(request);
+    for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
+    diagram = {result.analysis.pattern, std::filesystem::path(o.what).stem().string(),
+               format_significant(result.analysis.pattern.packing.d, 15),
+               result.analysis.stress.forces};
+  } else {
+    if (o.k == kUnsetK)
+      throw std::invalid_argument("draw: '" + o.what + "' is not a file; a class needs --k K");
+    const auto b = pipeline::build_and_certify(load_catalogue(g), {o.what, o.k, o.p, o.variant}, {});
+    diagram = {b.analysis ? b.analysis->pattern : b.pattern,
+               pipeline::member_name(b.pattern.provenance),
+               format_significant(b.pattern.packing.d, 15), forces_of(b.analysis)};
+  }
+  report::DiagramOptions options;
+  options.forces = o.forces;
+  options.disk_labels = o.disk_labels;
+  options.width_pixels = o.width;
+  report::draw_packing(diagram, o.output, options);
+  std::cout << o.output << "\n";
   return 0;
 }
 

@@ -24,9 +24,16 @@ struct OutputOptions {
   }
 };
 
+// --svg FILE / --png FILE / --pdf FILE: a diagram of the result's packing (report/diagram.hpp).
+struct DiagramTargets {
+  std::string svg, png, pdf;
+  bool forces = false;  // bond forces of the stress certificate as line widths
+};
+
 inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
 
 struct BuildOptions {
+  DiagramTargets diagrams;
   std::string class_id;
   long k = kUnsetK, p = 0;
   long long n = 0;  // --n: choose the best builder for n
@@ -39,6 +46,7 @@ struct BuildOptions {
 };
 
 struct AnalyzeOptions {
+  DiagramTargets diagrams;
   std::string file;
   std::string convention;  // empty: unit-triangle (radius for an x y r file)
   int digits = 15;
@@ -55,6 +63,7 @@ struct CheckFormulaOptions {
 };
 
 struct BilliardsCommandOptions {
+  DiagramTargets diagrams;
   long long n = 0;  // 0: the scene's n
   int runs = 10;
   std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
@@ -65,6 +74,27 @@ struct BilliardsCommandOptions {
   std::string file_format = "txt";  // of those files: txt, csv, json, pck
   OutputOptions out;
 };
+
+struct ExploreOptions {
+  long long max_n = 300;
+  int runs = 20;
+  int threads = 2;
+  std::uint64_t seed = 1;
+  std::string out = "report";
+};
+// `tripack draw FILE|CLASS`: a diagram of a points file (analysed) or a class member (built).
+struct DrawOptions {
+  std::string what;  // a points file, or a class id
+  long k = kUnsetK, p = 0;
+  std::string variant, convention;
+  std::string output;  // .svg, .png or .pdf
+  bool forces = false;
+  bool disk_labels = true;
+  int width = 900;
+};
+int cmd_draw(const GlobalOptions& g, const DrawOptions& o);
+
+int cmd_explore(const GlobalOptions& g, const ExploreOptions& o);
 
 int cmd_classes(const GlobalOptions& g, const OutputOptions& out);
 int cmd_classify(const GlobalOptions& g, long long n, const OutputOptions& out);

@@ -18,6 +18,13 @@ void add_output_flags(CLI::App* command, OutputOptions& out, bool with_points = 
     command->add_flag("--points", out.points, "with --json: every packing's coordinates");
 }
 
+void add_diagram_options(CLI::App* command, DiagramTargets& d) {
+  command->add_option("--svg", d.svg, "draw the packing to this SVG file");
+  command->add_option("--png", d.png, "draw the packing to this PNG file");
+  command->add_option("--pdf", d.pdf, "draw the packing to this PDF file");
+  command->add_flag("--forces", d.forces, "draw the stress certificate's bond forces as widths");
+}
+
 // A subcommand and what it runs once parsed.
 using Action = std::function<int()>;
 
@@ -35,6 +42,7 @@ Action add_build(CLI::App& cli, const GlobalOptions& g, BuildOptions& b) {
   c->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
   c->add_flag("!--no-certify", b.certify, "skip relax/bonds/rigidity/stress from the geometry");
   add_output_flags(c, b.out, true);
+  add_diagram_options(c, b.diagrams);
   return [c, &g, &b] { return *c ? cmd_build(g, b) : -1; };
 }
 
@@ -59,6 +67,7 @@ Action add_analyze(CLI::App& cli, AnalyzeOptions& a) {
   c->add_option("-o,--output", a.output,
                 "write the certified packing: .txt, .csv, .json or .pck (i x y)");
   add_output_flags(c, a.out, true);
+  add_diagram_options(c, a.diagrams);
   return [c, &a] { return *c ? cmd_analyze(a) : -1; };
 }
 
@@ -79,6 +88,7 @@ Action add_billiards(CLI::App& cli, const GlobalOptions& g, BilliardsCommandOpti
   c->add_option("-o,--output", o.output_dir,
                 "directory: one coordinate file per distinct packing, named by its label");
   c->add_option("--format", o.file_format, "format of those files: txt, csv, json or pck");
+  add_diagram_options(c, o.diagrams);  // the best packing found
   return [c, &g, &o] { return *c ? cmd_billiards(g, o) : -1; };
 }
 
@@ -96,6 +106,36 @@ Action add_check_formula(CLI::App& cli, const GlobalOptions& g, CheckFormulaOpti
   c->add_option("--p", o.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   add_output_flags(c, o.out);
   return [c, &g, &o] { return *c ? cmd_check_formula(g, o) : -1; };
+}
+
+Action add_draw(CLI::App& cli, const GlobalOptions& g, DrawOptions& o) {
+  auto* c = cli.add_subcommand(
+      "draw", "Diagram of a packing (a points file, analysed; or a class member, built), like the "
+              "paper's figures: shaded disks, unshaded rattlers, bond dots, labels, d");
+  c->add_option("what", o.what, "a points file (any layout of 'analyze') or a class id")->required();
+  c->add_option("--k", o.k, "class index k");
+  c->add_option("--p", o.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
+  c->add_option("--variant", o.variant, "variant");
+  c->add_option("--convention", o.convention, "of the points file (see analyze)");
+  c->add_option("-o,--output", o.output, "the picture: .svg, .png or .pdf")->required();
+  c->add_flag("--forces", o.forces, "bond forces of the stress certificate as line widths");
+  c->add_flag("!--no-labels", o.disk_labels, "no disk indices");
+  c->add_option("--width", o.width, "PNG width in pixels")->check(CLI::Range(100, 20000));
+  return [c, &g, &o] { return *c ? cmd_draw(g, o) : -1; };
+}
+
+Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
+  auto* c = cli.add_subcommand(
+      "explore",
+      "The main job: build and certify every class member up to --max-n, billiards for small n, "
+      "compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)");
+  c->add_option("--max-n", o.max_n, "class members up to this n (default 300)")
+      ->check(CLI::Range(2LL, 100000LL));
+  c->add_option("--runs", o.runs, "billiards runs per n (default 20)")->check(CLI::Range(1, 100000));
+  c->add_option("--threads", o.threads, "parallel runs (default 2)")->check(CLI::Range(1, 256));
+  c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
+  c->add_option("--out", o.out, "report directory (default ./report)");
+  return [c, &g, &o] { return *c ? cmd_explore(g, o) : -1; };
 }
 
 bool wants_json(int argc, char** argv) {
@@ -138,6 +178,8 @@ int main(int argc, char** argv) {
   AnalyzeOptions analyze;
   CheckFormulaOptions check;
   BilliardsCommandOptions billiards, compare;
+  ExploreOptions explore;
+  DrawOptions draw;
   const std::vector<Action> actions{
       add_build(cli, g, build),
       add_analyze(cli, analyze),

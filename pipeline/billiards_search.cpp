@@ -82,8 +82,10 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
   };
   auto worker = [&] {
     for (int r; (r = next.fetch_add(1)) < search.runs;) {
+      if (search.cancel && *search.cancel) break;
       RunOutcome& run = runs[static_cast<std::size_t>(r)];
       run.seed = search.seed + static_cast<std::uint64_t>(r);
+      run.ran = true;
       std::mt19937_64 rng(run.seed);
       BilliardsOptions options;
       if (search.progress)
@@ -186,6 +188,7 @@ BilliardsSearchResult search_billiards(const BilliardsSearch& search) {
   result.scene = search.scene;
   result.runs_asked = search.runs;
   result.runs = run_all(search);
+  std::erase_if(result.runs, [](const RunOutcome& run) { return !run.ran; });
   result.packings = distinct_of(result.runs, search.scene.n);
   result.seconds = seconds_since(start);
   return result;

@@ -3,6 +3,7 @@
 // Returns results; progress goes to a callback.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -31,6 +32,8 @@ struct BilliardsSearch {
   int threads = 1;
   bool certify = true;  // relax, bonds, rigidity, stress of every end state
   std::function<void(const SearchProgress&)> progress;  // from any worker thread, serialised
+  // When set, no new run starts (runs under way finish); the result holds the runs done.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RunOutcome {
@@ -39,6 +42,7 @@ struct RunOutcome {
   std::optional<Analysis> analysis;
   std::string error;  // the run failed with this message (the others go on)
   std::string label;  // of its distinct packing; "-" when not certified usable
+  bool ran = false;   // false: cancelled before it started
 };
 
 // One distinct packing found: d, its contact graph and rank.

@@ -15,6 +15,7 @@ PKGS=(
   libfmt-dev           # formatting
   nlohmann-json3-dev   # JSON output and input
   libgtest-dev googletest libbenchmark-dev
+  chromium             # headless browser: the test renders the explorer's index.html
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -240,6 +240,10 @@ else
   fail=$((fail + 1))
   echo "FAIL: many distinct packings: $total labels, $unique unique, $valid valid, json rc $rc"
 fi
+# compare: the builder's t22a and the best billiards packing are the same packing (GL1995 Fig.t22).
+expect_output "compare 22" "the same packing" compare 22 --runs 10 --threads 2
+expect_output "compare 22 csv" ",true,true," compare 22 --runs 10 --threads 2 --csv
+
 # A random start without growth would run to max_seconds doing nothing: refused in one line.
 expect_error "zero growth scene" "needs growth with a rate > 0" billiards --scene "$DATA/scenes/zero_growth.yaml"
 

@@ -1,0 +1,289 @@
+#include "pipeline/explore.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "core/conventions.hpp"
+#include "pipeline/timing.hpp"
+
+namespace tripack::pipeline {
+
+namespace {
+
+// Relative cost of the work items, for the progress fraction and the estimate (seconds on 2
+// cores, measured on this project's machines: docs/performance.md "Explorer").
+double build_cost(long long n) {
+  return 2e-3 + 1.5e-6 * std::pow(static_cast<double>(n), 1.6);
+}
+double search_cost(long long n, int runs, int threads, double rate) {
+  // A run's events grow ~ n / rate (the disks must grow to jam), its analysis ~ n^1.5.
+  const double per_run = 2e-8 * static_cast<double>(n) * std::log(static_cast<double>(n) + 2) *
+                             (static_cast<double>(n) / rate) * 5 +
+                         3e-5 * std::pow(static_cast<double>(n), 1.5);
+  return per_run * runs / std::max(1, threads);
+}
+
+bool proven_optimal(long long n) {
+  if (n <= 15) return true;  // GL1995 Sec.1: optimal packings known (proved) for n <= 15
+  const auto k = static_cast<long long>(std::llround((std::sqrt(8.0 * n + 1) - 1) / 2));
+  return triangular(k) == n;  // Delta(k): Oler's bound is attained (Oler 1961)
+}
+
+std::string member_tag(const Provenance& m) {
+  std::string s = fmt::format("{}-k{}", m.class_id, m.k);
+  if (m.p) s += fmt::format("-p{}", m.p);
+  if (!m.variant.empty()) s += "-" + m.variant;
+  return s;
+}
+
+struct Plan {
+  std::vector<BuildRequest> builds;
+  std::vector<long long> searches;  // n, increasing
+  double cost = 0;
+};
+
+Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
+  Plan plan;
+  plan.builds = class_members_up_to(catalogue, s.max_n);
+  std::set<long long> search_n;
+  for (long long n = 2; n <= std::min(s.billiards_max_n, s.max_n); ++n) search_n.insert(n);
+  for (const auto& b : plan.builds) {
+    const long long n = catalogue.n_of(catalogue.find(b.class_id), b.k, b.p);
+    plan.cost += build_cost(n);
+    if (n <= std::min(s.class_billiards_max_n, s.max_n) && n >= 2) search_n.insert(n);
+  }
+  for (long long n : s.stress_set)
+    if (n <= s.max_n) search_n.insert(n);
+  for (const auto& b : s.large_terms) {
+    plan.builds.push_back(b);
+    plan.cost += build_cost(catalogue.n_of(catalogue.find(b.class_id), b.k, b.p));
+  }
+  plan.searches.assign(search_n.begin(), search_n.end());
+  for (long long n : plan.searches) {
+    const Scene scene = default_scene(static_cast<int>(n));
+    const double rate = scene.growth ? scene.growth->rate : 0.01;
+    plan.cost += search_cost(n, n > s.billiards_max_n && n > s.class_billiards_max_n ? s.large_runs
+                                                                                     : s.runs,
+                             s.threads, rate);
+  }
+  return plan;
+}
+
+ExplorePacking packing_of_build(const BuildResult& b, double seconds) {
+  ExplorePacking row;
+  row.n = static_cast<long long>(b.pattern.packing.size());
+  row.member = b.pattern.provenance;
+  row.label = member_tag(row.member);
+  row.pattern = b.analysis ? b.analysis->pattern : b.pattern;
+  if (b.analysis) {
+    row.certified = b.analysis->certified();
+    row.verdict = b.analysis->status();
+    row.forces = b.analysis->stress.forces;
+  } else {
+    row.verdict = "not certified (certification skipped)";
+  }
+  row.source = "builder";
+  row.seconds = seconds;
+  row.proven_optimal = proven_optimal(row.n);
+  return row;
+}
+
+ExplorePacking packing_of_search(const DistinctPacking& x, std::size_t rank, double seconds,
+                                 const std::vector<RunOutcome>& runs) {
+  ExplorePacking row;
+  row.n = static_cast<long long>(x.pattern.packing.size());
+  row.rank = static_cast<int>(rank + 1);
+  row.label = x.label;
+  row.pattern = x.pattern;
+  row.certified = x.certified;
+  row.verdict = x.verdict;
+  for (const auto& run : runs)
+    if (run.seed == x.first_seed && run.analysis) row.forces = run.analysis->stress.forces;
+  row.source = "billiards";
+  row.seconds = seconds;
+  row.proven_optimal = proven_optimal(row.n);
+  return row;
+}
+
+// The best builder row for each n (largest d).
+std::map<long long, const ExplorePacking*> best_builder_by_n(const std::vector<ExplorePacking>& rows) {
+  std::map<long long, const ExplorePacking*> best;
+  for (const auto& r : rows)
+    if (r.source == "builder" && (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d))
+      best[r.n] = &r;
+  return best;
+}
+
+void compare_with_builders(ExploreResult& result, long long n, const BilliardsSearchResult& found) {
+  if (found.packings.empty()) return;
+  // Every builder row of this n learns its billiards label when the search found it.
+  for (auto& row : result.packings) {
+    if (row.source != "builder" || row.n != n) continue;
+    for (std::size_t i = 0; i < found.packings.size(); ++i)
+      if (compare_packings(row.pattern, found.packings[i].pattern).same) {
+        row.rank = static_cast<int>(i + 1);
+        row.label = found.packings[i].label;
+        break;
+      }
+  }
+  const auto best = best_builder_by_n(result.packings);
+  const auto it = best.find(n);
+  if (it == best.end()) return;
+  const ExplorePacking& b = *it->second;
+  const DistinctPacking& x = found.packings.front();
+  const Comparison c = compare_packings(b.pattern, x.pattern);
+  ExploreComparison row;
+  row.n = n;
+  row.builder = member_name(b.member);
+  row.billiards_label = x.label;
+  row.d_builder = b.pattern.packing.d;
+  row.d_billiards = x.pattern.packing.d;
+  row.d_relative_difference = (row.d_billiards - row.d_builder) / row.d_builder;
+  row.bonds_builder = b.pattern.bonds.size();
+  row.bonds_billiards = x.bonds;
+  row.rattlers_builder = b.pattern.rattlers.size();
+  row.rattlers_billiards = x.rattlers;
+  row.same_contact_graph = c.isomorphic;
+  row.same_packing = c.same;
+  row.symmetry = c.symmetry ? std::string(symmetry_name(*c.symmetry)) : "";
+  row.reason = c.reason;
+  result.comparisons.push_back(row);
+}
+
+// L(n(k)+1) - L(n(k)) for every class member whose n + 1 has a value here.
+std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
+                                    const std::vector<ExplorePacking>& rows) {
+  std::map<long long, const ExplorePacking*> best;  // best d for each n, any source
+  for (const auto& r : rows)
+    if (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d) best[r.n] = &r;
+  std::vector<ClassGap> gaps;
+  std::set<std::tuple<std::string, long, long>> seen;
+  for (const auto& r : rows) {
+    if (r.source != "builder" || !seen.insert({r.member.class_id, r.member.k, r.member.p}).second)
+      continue;
+    const auto next = best.find(r.n + 1);
+    if (next == best.end()) continue;
+    ClassGap g;
+    g.class_id = r.member.class_id;
+    g.k = r.member.k;
+    g.p = r.member.p;
+    g.n = r.n;
+    g.L_n = 1 / r.pattern.packing.d;
+    g.L_next = 1 / next->second->pattern.packing.d;
+    g.next_source = next->second->source == "builder"
+                        ? "builder: " + member_name(next->second->member)
+                        : "billiards: " + next->second->label;
+    g.claim_tight = catalogue.find(r.member.class_id).claim_tight;
+    gaps.push_back(g);
+  }
+  return gaps;
+}
+
+}  // namespace
+
+std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n) {
+  std::vector<BuildRequest> members;
+  for (const auto& c : catalogue.classes()) {
+    for (long p = c.has_p ? c.p_min : 0;; ++p) {
+      bool any = false;
+      for (long k = c.k_min; !c.k_max || k <= c.k_max; ++k) {
+        const long long n = catalogue.n_of(c, k, p);
+        if (n > max_n) break;
+        any = true;
+        std::vector<std::string> variants = catalogue.variants_at(c, k);
+        if (variants.empty()) variants.push_back("");
+        for (const auto& v : variants) members.push_back({c.id, k, p, v});
+      }
+      if (!c.has_p || !any) break;
+    }
+  }
+  return members;
+}
+
+double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettings& settings) {
+  return plan_for(catalogue, settings).cost;
+}
+
+ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
+                      const std::atomic<bool>& cancel,
+                      const std::function<void(const ExploreProgress&)>& progress) {
+  const auto start = Clock::now();
+  ExploreResult result;
+  result.settings = settings;
+  const Plan plan = plan_for(catalogue, settings);
+  double done = 0;
+  auto report = [&](const std::string& stage, const std::string& item) {
+    if (progress)
+      progress({stage, item, plan.cost > 0 ? std::min(1.0, done / plan.cost) : 1.0,
+                seconds_since(start)});
+  };
+  for (const auto& request : plan.builds) {
+    if (cancel) break;
+    const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
+    report("build", fmt::format("{} (n = {})", member_name({request.class_id, request.k,
+                                                            request.p, request.variant}), n));
+    const auto t0 = Clock::now();
+    try {
+      try {
+        const BuildResult b = build_and_certify(catalogue, request, BuildSettings{});
+        result.packings.push_back(packing_of_build(b, seconds_since(t0)));
+      } catch (const std::exception& certify_error) {
+        // Near-degenerate members (README "Known limits") can defeat the certificate's LP: keep
+        // the polished build, marked as not certified, with the reason.
+        BuildSettings polish_only;
+        polish_only.certify = false;
+        const BuildResult b = build_and_certify(catalogue, request, polish_only);
+        ExplorePacking row = packing_of_build(b, seconds_since(t0));
+        row.verdict = std::string("not certified: ") + certify_error.what();
+        result.packings.push_back(std::move(row));
+      }
+    } catch (const std::exception& e) {
+      result.errors.push_back(fmt::format("build {}: {}", member_name({request.class_id,
+                                                                       request.k, request.p,
+                                                                       request.variant}),
+                                          e.what()));
+    }
+    done += build_cost(n);
+  }
+  if (!cancel) result.stages_done.push_back("build");
+  for (long long n : plan.searches) {
+    if (cancel) break;
+    const bool large = n > settings.billiards_max_n && n > settings.class_billiards_max_n;
+    BilliardsSearch search;
+    search.scene = default_scene(static_cast<int>(n));
+    search.runs = large ? settings.large_runs : settings.runs;
+    search.seed = settings.seed;
+    search.threads = settings.threads;
+    search.cancel = &cancel;
+    report("billiards", fmt::format("n = {}, {} runs", n, search.runs));
+    const auto t0 = Clock::now();
+    try {
+      const BilliardsSearchResult found = search_billiards(search);
+      const double seconds = seconds_since(t0);
+      for (std::size_t i = 0; i < found.packings.size(); ++i)
+        result.packings.push_back(packing_of_search(found.packings[i], i, seconds, found.runs));
+      compare_with_builders(result, n, found);
+    } catch (const std::exception& e) {
+      result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
+    }
+    done += search_cost(n, search.runs, settings.threads,
+                        search.scene.growth ? search.scene.growth->rate : 0.01);
+  }
+  if (!cancel) result.stages_done.push_back("billiards");
+  std::stable_sort(result.packings.begin(), result.packings.end(),
+                   [](const ExplorePacking& a, const ExplorePacking& b) {
+                     if (a.n != b.n) return a.n < b.n;
+                     return a.source == "builder" && b.source != "builder";
+                   });
+  result.class_gaps = class_gaps_of(catalogue, result.packings);
+  result.interrupted = cancel;
+  result.seconds = seconds_since(start);
+  report("done", "");
+  return result;
+}
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,99 @@
+// The explorer (`tripack explore`, issue 9): every class member up to max_n built and certified,
+// billiards searches for small n, class members and the matrix stress set, the two compared, and
+// the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
+// report directory. Stops between items when `cancel` is set and says so in the result.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pipeline/billiards_search.hpp"
+#include "pipeline/build.hpp"
+#include "pipeline/compare.hpp"
+
+namespace tripack::pipeline {
+
+struct ExploreSettings {
+  long long max_n = 300;            // class members built and certified up to this n
+  long long billiards_max_n = 40;   // billiards for every n = 2 .. this
+  long long class_billiards_max_n = 60;  // and for every class member up to this
+  std::vector<long long> stress_set{254, 255, 256, 258, 260};  // matrix stress set, when <= max_n
+  // A few large class members, built and certified (4Delta(22): n = 1012; Delta(40): n = 820).
+  std::vector<BuildRequest> large_terms{{"four-delta", 22, 0, ""}, {"hexagonal", 40, 0, ""}};
+  int runs = 20;          // billiards runs per n up to billiards_max_n
+  int large_runs = 4;     // per n of the stress set (slow growth: each run takes seconds)
+  int threads = 2;
+  std::uint64_t seed = 1;
+};
+
+// One row of packings.csv: a built class member or a distinct billiards packing.
+struct ExplorePacking {
+  long long n = 0;
+  int rank = 0;         // billiards: 1 = best found; builder: the rank of the same packing
+                        // among the billiards ones, 0 when billiards did not find it (or ran not)
+  std::string label;    // billiards label (t22a); builder: the label of the same billiards
+                        // packing, else "class-k[-p][-variant]"
+  Provenance member;    // builder rows (class_id empty for billiards rows)
+  Pattern pattern;      // polished, bonds and rattlers from the geometry when certified
+  std::vector<long double> forces;  // stress certificate per bond (empty when not certified)
+  bool certified = false;
+  std::string verdict;
+  std::string source;   // "builder" or "billiards"
+  double seconds = 0;
+  bool proven_optimal = false;  // Delta(k) (Oler) or n <= 15 (GL1995 Sec.1)
+};
+
+// One row of compare.csv.
+struct ExploreComparison {
+  long long n = 0;
+  std::string builder, billiards_label;
+  long double d_builder = 0, d_billiards = 0;
+  long double d_relative_difference = 0;  // (billiards - builder) / builder
+  std::size_t bonds_builder = 0, bonds_billiards = 0, rattlers_builder = 0, rattlers_billiards = 0;
+  bool same_contact_graph = false, same_packing = false;
+  std::string symmetry, reason;
+};
+
+// One row of classes.csv: the paper's tight/loose measure L(n(k)+1) - L(n(k)).
+struct ClassGap {
+  std::string class_id;
+  long k = 0, p = 0;
+  long long n = 0;
+  long double L_n = 0, L_next = 0;  // L(n) and L(n+1) (the best known here)
+  std::string next_source;          // "builder: class k=.." or "billiards"
+  std::string claim_tight;          // the paper's conjecture from classes.yaml
+};
+
+struct ExploreProgress {
+  std::string stage;  // "build", "billiards", ...
+  std::string item;   // what is being done now
+  double fraction = 0;  // of the whole exploration's estimated cost, 0..1
+  double elapsed = 0;   // seconds
+};
+
+struct ExploreResult {
+  ExploreSettings settings;
+  std::vector<ExplorePacking> packings;  // by n, builder rows first, then billiards by rank
+  std::vector<ExploreComparison> comparisons;
+  std::vector<ClassGap> class_gaps;
+  std::vector<std::string> stages_done;
+  std::vector<std::string> errors;  // one line each: an item that failed (the rest went on)
+  bool interrupted = false;
+  double seconds = 0;
+};
+
+// Estimated seconds of an exploration on 2 cores (measured per stage on this project's machines;
+// docs/performance.md), to warn before a run far beyond the 5-minute budget.
+double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettings& settings);
+
+ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
+                      const std::atomic<bool>& cancel,
+                      const std::function<void(const ExploreProgress&)>& progress = {});
+
+// Every (class, k, p, variant) of the catalogue with n <= max_n, in catalogue order.
+std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n);
+
+}  // namespace tripack::pipeline

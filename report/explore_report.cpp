@@ -1,0 +1,275 @@
+#include "report/explore_report.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/conventions.hpp"
+#include "core/io.hpp"
+#include "report/diagram.hpp"
+#include "report/plot.hpp"
+
+namespace tripack::report {
+
+namespace fs = std::filesystem;
+using namespace pipeline;
+
+namespace {
+
+std::string digits17(long double v) {
+  return format_significant(v, 17);
+}
+
+// A file written whole or an error naming it.
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+  out << text;
+  if (!out) throw std::runtime_error("failed writing '" + path.string() + "'");
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string class_of(const ExplorePacking& r) {
+  return r.member.class_id;
+}
+
+std::string packings_csv(const ExploreResult& result) {
+  std::ostringstream out;
+  out << "n,rank,label,class,p,k,variant,d,L,delta,bonds,rattlers,certified,source,seconds,file\n";
+  for (const auto& r : result.packings) {
+    const long double d = r.pattern.packing.d;
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n, r.rank,
+                       csv_field(r.label), class_of(r), r.member.p ? std::to_string(r.member.p) : "",
+                       r.member.class_id.empty() ? "" : std::to_string(r.member.k),
+                       csv_field(r.member.variant), digits17(d), digits17(1 / d),
+                       digits17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
+                       r.pattern.rattlers.size(), r.certified ? "true" : "false", r.source,
+                       r.seconds, packing_file_name(r));
+  }
+  return out.str();
+}
+
+std::string packings_json(const ExploreResult& result) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : result.packings) {
+    const long double d = r.pattern.packing.d;
+    rows.push_back({{"n", r.n},
+                    {"rank", r.rank},
+                    {"label", r.label},
+                    {"class", r.member.class_id.empty() ? nlohmann::json(nullptr)
+                                                        : nlohmann::json(r.member.class_id)},
+                    {"p", r.member.p ? nlohmann::json(r.member.p) : nlohmann::json(nullptr)},
+                    {"k", r.member.class_id.empty() ? nlohmann::json(nullptr)
+                                                    : nlohmann::json(r.member.k)},
+                    {"variant", r.member.variant.empty() ? nlohmann::json(nullptr)
+                                                         : nlohmann::json(r.member.variant)},
+                    {"d", digits17(d)},
+                    {"L", digits17(1 / d)},
+                    {"delta", digits17(oler_delta(r.n, 1 / d))},
+                    {"bonds", r.pattern.bonds.size()},
+                    {"rattlers", r.pattern.rattlers.size()},
+                    {"rattler_indices", r.pattern.rattlers},
+                    {"certified", r.certified},
+                    {"verdict", r.verdict},
+                    {"proven_optimal", r.proven_optimal},
+                    {"source", r.source},
+                    {"seconds", r.seconds},
+                    {"file", packing_file_name(r)}});
+  }
+  nlohmann::json j{{"packings", rows},
+                   {"interrupted", result.interrupted},
+                   {"stages_done", result.stages_done},
+                   {"errors", result.errors},
+                   {"seconds", result.seconds}};
+  return j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+std::string compare_csv(const ExploreResult& result) {
+  std::ostringstream out;
+  out << "n,builder,billiards_label,d_builder,d_billiards,d_relative_difference,bonds_builder,"
+         "bonds_billiards,rattlers_builder,rattlers_billiards,same_contact_graph,same_packing,"
+         "symmetry,reason\n";
+  for (const auto& c : result.comparisons)
+    out << fmt::format("{},{},{},{},{},{:.3g},{},{},{},{},{},{},{},{}\n", c.n, csv_field(c.builder),
+                       c.billiards_label, digits17(c.d_builder), digits17(c.d_billiards),
+                       static_cast<double>(c.d_relative_difference), c.bonds_builder,
+                       c.bonds_billiards, c.rattlers_builder, c.rattlers_billiards,
+                       c.same_contact_graph, c.same_packing, c.symmetry, csv_field(c.reason));
+  return out.str();
+}
+
+std::string classes_csv(const ExploreResult& result) {
+  std::ostringstream out;
+  out << "class,p,k,n,L_n,L_n_plus_1,difference,n_plus_1_from,paper_tight\n";
+  for (const auto& g : result.class_gaps)
+    out << fmt::format("{},{},{},{},{},{},{},{},{}\n", g.class_id, g.p ? std::to_string(g.p) : "",
+                       g.k, g.n, digits17(g.L_n), digits17(g.L_next), digits17(g.L_next - g.L_n),
+                       csv_field(g.next_source), csv_field(g.claim_tight));
+  return out.str();
+}
+
+std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
+  std::vector<DeltaPoint> points;
+  std::set<std::pair<std::string, long long>> seen;
+  std::map<long long, const ExplorePacking*> billiards_best;
+  std::set<long long> in_class;
+  for (const auto& r : result.packings) {
+    if (r.source == "builder") in_class.insert(r.n);
+    if (r.source == "billiards" && r.rank == 1) billiards_best[r.n] = &r;
+  }
+  for (const auto& r : result.packings) {
+    if (r.source != "builder" || !seen.insert({r.member.class_id, r.n}).second) continue;
+    const double delta = static_cast<double>(oler_delta(r.n, 1 / r.pattern.packing.d));
+    points.push_back({r.n, delta, r.member.class_id, r.proven_optimal, false});
+  }
+  for (const auto& [n, r] : billiards_best) {
+    const double delta = static_cast<double>(oler_delta(n, 1 / r->pattern.packing.d));
+    points.push_back({n, delta, "", r->proven_optimal, true});
+    if (!in_class.count(n)) points.push_back({n, delta, "", r->proven_optimal, false});
+  }
+  return points;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+std::string html_page(const ExploreResult& result, bool diagrams) {
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       "<title>tripack explore</title>\n<style>\n"
+       "body{font-family:sans-serif;margin:1.5em;max-width:1200px}"
+       "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px;"
+       "text-align:right}th{background:#eee}.warn{background:#fdd;padding:.5em;border:1px solid #c00}"
+       ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0;width:220px;font-size:11px}"
+       ".grid img{width:220px}\n</style></head><body>\n";
+  h << "<h1>Dense packings of n equal disks in an equilateral triangle</h1>\n";
+  if (result.interrupted)
+    h << "<p class=\"warn\" id=\"interrupted\">This exploration was interrupted: the report shows "
+         "what finished (stages done: "
+      << html_escape(fmt::format("{}", fmt::join(result.stages_done, ", "))) << ").</p>\n";
+  h << fmt::format(
+      "<p>max n {}, billiards for n &le; {} and class members &le; {}, {} runs per n (stress set: "
+      "{} runs), seed {}; {} packings, {} comparisons; {:.1f} s.</p>\n",
+      result.settings.max_n, result.settings.billiards_max_n,
+      result.settings.class_billiards_max_n, result.settings.runs, result.settings.large_runs,
+      result.settings.seed, result.packings.size(), result.comparisons.size(), result.seconds);
+  for (const auto& e : result.errors) h << "<p class=\"warn\">" << html_escape(e) << "</p>\n";
+  h << "<h2>&delta;(n) = L(n) &minus; t(n)</h2>\n<p><img src=\"delta.svg\" alt=\"delta(n) plot\" "
+       "width=\"900\"></p>\n<p>Data: <a href=\"delta.csv\">delta.csv</a>, script: <a "
+       "href=\"delta.gp\">delta.gp</a>; all packings: <a href=\"packings.csv\">packings.csv</a>, "
+       "<a href=\"packings.json\">packings.json</a>; <a href=\"compare.csv\">compare.csv</a>, <a "
+       "href=\"classes.csv\">classes.csv</a>.</p>\n";
+  h << "<h2>Constructed vs billiards</h2>\n<table><tr><th>n</th><th>builder</th><th>billiards"
+       "</th><th>d builder</th><th>d billiards</th><th>rel. diff</th><th>bonds</th><th>rattlers"
+       "</th><th>same graph</th></tr>\n";
+  for (const auto& c : result.comparisons)
+    h << fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.2g}</td><td>{} / {}"
+        "</td><td>{} / {}</td><td>{}</td></tr>\n",
+        c.n, html_escape(c.builder), html_escape(c.billiards_label),
+        format_significant(c.d_builder, 15), format_significant(c.d_billiards, 15),
+        static_cast<double>(c.d_relative_difference), c.bonds_builder, c.bonds_billiards,
+        c.rattlers_builder, c.rattlers_billiards,
+        c.same_packing ? "yes (" + c.symmetry + ")" : (c.same_contact_graph ? "graph only" : "no"));
+  h << "</table>\n<h2>Class gaps L(n(k)+1) &minus; L(n(k))</h2>\n<table><tr><th>class</th><th>p"
+       "</th><th>k</th><th>n</th><th>difference</th><th>n+1 from</th><th>paper: tight</th></tr>\n";
+  for (const auto& g : result.class_gaps)
+    h << fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.6g}</td><td>{}</td>"
+                     "<td>{}</td></tr>\n",
+                     g.class_id, g.p ? std::to_string(g.p) : "", g.k, g.n,
+                     static_cast<double>(g.L_next - g.L_n), html_escape(g.next_source),
+                     html_escape(g.claim_tight));
+  h << "</table>\n<h2>Packings</h2>\n<table><tr><th>n</th><th>label</th><th>source</th><th>d</th>"
+       "<th>&delta;</th><th>bonds</th><th>rattlers</th><th>certified</th><th>file</th></tr>\n";
+  for (const auto& r : result.packings) {
+    const long double d = r.pattern.packing.d;
+    h << fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.6f}</td><td>{}</td><td>{}</td>"
+        "<td>{}</td><td><a href=\"{}\">coordinates</a></td></tr>\n",
+        r.n, html_escape(r.label), r.source, format_significant(d, 15),
+        static_cast<double>(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
+        r.pattern.rattlers.size(), r.certified ? "yes" : "no", packing_file_name(r));
+  }
+  h << "</table>\n";
+  if (diagrams) {
+    h << "<h2>Diagrams</h2>\n<div class=\"grid\">\n";
+    for (const auto& r : result.packings) {
+      const std::string stem = packing_file_name(r);
+      const std::string base = "diagrams/" + fs::path(stem).stem().string();
+      h << fmt::format(
+          "<figure><a href=\"{0}.svg\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
+          "<figcaption>{1} (n = {2}, d = {3})</figcaption></figure>\n",
+          base, html_escape(r.label), r.n, format_significant(r.pattern.packing.d, 15));
+    }
+    h << "</div>\n";
+  }
+  h << "<p>tripack: d(n) is the largest minimum distance of n points in the side-1 equilateral "
+       "triangle; L = 1/d; Oler's bound t(n) = (&minus;3 + &radic;(8n+1))/2. Every value above was "
+       "polished and certified (rigid with a strictly positive stress) unless marked.</p>\n";
+  h << "</body></html>\n";
+  return h.str();
+}
+
+}  // namespace
+
+std::string packing_file_name(const ExplorePacking& row) {
+  const std::string name = row.source == "builder"
+                               ? fmt::format("n{:04d}-{}", row.n, row.member.class_id) +
+                                     fmt::format("-k{}", row.member.k) +
+                                     (row.member.p ? fmt::format("-p{}", row.member.p) : "") +
+                                     (row.member.variant.empty() ? "" : "-" + row.member.variant)
+                               : fmt::format("n{:04d}-{}", row.n, row.label);
+  return "packings/" + name + ".txt";
+}
+
+void write_explore_report(const ExploreResult& result, const fs::path& dir,
+                          const ExploreReportOptions& options,
+                          const std::function<void(const std::string&)>& progress) {
+  auto say = [&](const std::string& what) {
+    if (progress) progress(what);
+  };
+  std::error_code ec;
+  fs::create_directories(dir / "packings", ec);
+  if (!ec) fs::create_directories(dir / "diagrams", ec);
+  if (ec) throw std::runtime_error("cannot write to directory '" + dir.string() + "'");
+  say("data: packings.csv, packings.json, compare.csv, classes.csv, coordinates");
+  write_file(dir / "packings.csv", packings_csv(result));
+  write_file(dir / "packings.json", packings_json(result));
+  write_file(dir / "compare.csv", compare_csv(result));
+  write_file(dir / "classes.csv", classes_csv(result));
+  for (const auto& r : result.packings) write_pattern((dir / packing_file_name(r)).string(), r.pattern);
+  if (options.diagrams) {
+    say(fmt::format("diagrams: {} packings", result.packings.size()));
+    for (const auto& r : result.packings) {
+      Diagram diagram{r.pattern, r.label, format_significant(r.pattern.packing.d, 15), r.forces};
+      const fs::path base = dir / "diagrams" / fs::path(packing_file_name(r)).stem();
+      draw_packing(diagram, base.string() + ".svg");
+      draw_packing(diagram, base.string() + ".png", {600, true, false});
+    }
+  }
+  say("plot: delta.svg, delta.png, delta.pdf");
+  plot_delta(delta_points(result), dir);
+  say("index.html");
+  write_file(dir / "index.html", html_page(result, options.diagrams));
+}
+
+}  // namespace tripack::report

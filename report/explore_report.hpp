@@ -1,0 +1,29 @@
+// The explorer's report directory (issue 9): data first (CSV, JSON, coordinate files), then the
+// pictures (Cairo diagrams, gnuplot plots), then index.html, which is written last so that a
+// page on disk always describes files that exist. Works from a partial (interrupted) result too.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "pipeline/explore.hpp"
+
+namespace tripack::report {
+
+struct ExploreReportOptions {
+  bool diagrams = true;        // one SVG + PNG per packing
+  bool forces = true;          // also a forces diagram of each certified builder packing
+};
+
+// Writes `dir` (created if needed). Throws a one-line error when the directory cannot be written
+// or gnuplot is missing (after the data files are written). `progress` gets a line per artifact.
+void write_explore_report(const pipeline::ExploreResult& result, const std::filesystem::path& dir,
+                          const ExploreReportOptions& options = {},
+                          const std::function<void(const std::string&)>& progress = {});
+
+// The coordinate file name of a packing row, relative to the report directory.
+std::string packing_file_name(const pipeline::ExplorePacking& row);
+
+}  // namespace tripack::report

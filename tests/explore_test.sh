@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The explorer end to end: a small `tripack explore` writes the report directory; index.html
+# renders in headless Chromium (screenshot and DOM); bad input and Ctrl-C are handled.
+# Usage: explore_test.sh path/to/tripack
+set -u
+TRIPACK=$1
+pass=0
+fail=0
+check() {  # check "description" command...
+  local what=$1
+  shift
+  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $what"; fi
+}
+CHROMIUM=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$CHROMIUM" ]; then
+  echo "explore_test: chromium not found: install the Debian package chromium (scripts/install-deps.sh does)"
+  echo "explore: 0 passed, 1 failed"
+  exit 1
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$TRIPACK" explore --max-n 24 --runs 3 --out "$tmp/report" >"$tmp/out.txt" 2>"$tmp/err.txt"
+check "explore exits 0" [ $? -eq 0 ]
+for f in index.html delta.svg delta.png delta.pdf delta.csv delta.gp packings.csv packings.json compare.csv classes.csv; do
+  check "report has $f" [ -s "$tmp/report/$f" ]
+done
+check "explore says where the report is" grep -q "report: $tmp/report/index.html" "$tmp/out.txt"
+# Every packing row names a coordinate file and a diagram that exist.
+missing=0
+while IFS=, read -r n rank label cls p k variant d L delta bonds ratt cert source secs file; do
+  [ "$n" = n ] && continue
+  [ -s "$tmp/report/$file" ] || missing=$((missing + 1))
+  stem=$(basename "$file" .txt)
+  [ -s "$tmp/report/diagrams/$stem.png" ] && [ -s "$tmp/report/diagrams/$stem.svg" ] || missing=$((missing + 1))
+done <"$tmp/report/packings.csv"
+check "every row's files exist ($missing missing)" [ "$missing" -eq 0 ]
+
+# Headless Chromium (as root it needs --no-sandbox): the page loads offline from disk.
+"$CHROMIUM" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1280,2400 \
+  --screenshot="$tmp/page.png" "file://$tmp/report/index.html" >/dev/null 2>&1
+check "chromium screenshot written" [ -s "$tmp/page.png" ]
+size=$(stat -c %s "$tmp/page.png" 2>/dev/null || echo 0)
+check "screenshot is not blank ($size bytes)" [ "$size" -gt 30000 ]
+"$CHROMIUM" --headless --no-sandbox --disable-gpu --dump-dom "file://$tmp/report/index.html" >"$tmp/dom.html" 2>/dev/null
+check "DOM has the delta plot" grep -q '<img src="delta.svg"' "$tmp/dom.html"
+rows=$(grep -c '<a href="packings/' "$tmp/dom.html")
+csv_rows=$(($(wc -l <"$tmp/report/packings.csv") - 1))
+check "DOM lists every packing ($rows vs $csv_rows)" [ "$rows" -eq "$csv_rows" ]
+check "page fetches nothing (no fetch/XHR)" bash -c "! grep -qE 'fetch\(|XMLHttpRequest' '$tmp/report/index.html'"
+[ -n "${KEEP_SCREENSHOT:-}" ] && cp "$tmp/page.png" "$KEEP_SCREENSHOT"
+
+# Bad input: one line on stderr, non-zero exit.
+err=$("$TRIPACK" explore --max-n 10 --out /proc/forbidden/report 2>&1 >/dev/null)
+check "unwritable --out ($err)" bash -c "[ \$(wc -l <<<'$err') -eq 1 ] && grep -q 'cannot write' <<<'$err'"
+err=$(TRIPACK_GNUPLOT=/nonexistent "$TRIPACK" explore --max-n 10 --out "$tmp/r2" 2>&1 >/dev/null)
+check "missing gnuplot names the package ($err)" bash -c "grep -q 'gnuplot-nox' <<<'$err'"
+err=$("$TRIPACK" explore --max-n 3000 --out "$tmp/r3" 2>&1 >/dev/null & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo "rc=$?")
+check "large --max-n warns with the estimated cost" bash -c "grep -q 'estimated at' <<<'$err'"
+
+# Ctrl-C mid-run: a consistent report of what finished, saying so; non-zero exit.
+"$TRIPACK" explore --max-n 120 --out "$tmp/r4" >/dev/null 2>"$tmp/err4.txt" &
+pid=$!
+sleep 4
+kill -INT "$pid"
+wait "$pid"
+rc=$?
+check "Ctrl-C exits non-zero (rc=$rc)" [ "$rc" -ne 0 ]
+check "Ctrl-C report says interrupted" grep -q 'id="interrupted"' "$tmp/r4/index.html"
+check "Ctrl-C report has its data" [ -s "$tmp/r4/packings.csv" ]
+check "Ctrl-C error is one line" grep -q "interrupted" "$tmp/err4.txt"
+
+echo "explore: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,135 @@
+// The explorer's data (issue 9): the values behind the delta(n) plot against closed forms, and
+// every written packing file re-analysed passes the certificate its row claims.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/conventions.hpp"
+#include "core/io.hpp"
+#include "core/points.hpp"
+#include "pipeline/analyze.hpp"
+#include "pipeline/explore.hpp"
+#include "report/explore_report.hpp"
+
+namespace tripack {
+namespace {
+
+namespace fs = std::filesystem;
+
+const Catalogue& catalogue() {
+  static const Catalogue c = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
+  return c;
+}
+
+// A small exploration (seconds): class members up to 60, billiards up to n = 12.
+const pipeline::ExploreResult& small_exploration() {
+  static const pipeline::ExploreResult result = [] {
+    pipeline::ExploreSettings s;
+    s.max_n = 60;
+    s.billiards_max_n = 12;
+    s.class_billiards_max_n = 16;
+    s.stress_set.clear();
+    s.large_terms.clear();
+    s.runs = 6;
+    std::atomic<bool> cancel{false};
+    return pipeline::explore(catalogue(), s, cancel);
+  }();
+  return result;
+}
+
+double delta_of(const pipeline::ExplorePacking& r) {
+  return static_cast<double>(oler_delta(r.n, 1 / r.pattern.packing.d));
+}
+
+TEST(Explore, DeltaOfTriangularNumbersIsZero) {
+  // Oler 1961: d(Delta(k)) = 1/(k-1), so L = k - 1 = t(Delta(k)) and delta = 0.
+  int seen = 0;
+  for (const auto& r : small_exploration().packings)
+    if (r.source == "builder" && r.member.class_id == "hexagonal") {
+      EXPECT_NEAR(delta_of(r), 0.0, 1e-13) << r.n;  // ~100 ulps of L <= 10
+      EXPECT_TRUE(r.proven_optimal);
+      ++seen;
+    }
+  EXPECT_GE(seen, 9);  // Delta(2..10) <= 60
+}
+
+TEST(Explore, DeltaOfFourDeltaDecreasesToSqrt3MinusThreeHalvesAsOneOverK) {
+  // GL1995: L(4Delta(k)) = 2k - 2 + sqrt3; with t(2k(k+1)) = (-3 + sqrt(16k^2 + 16k + 1)) / 2,
+  // delta - (sqrt3 - 3/2) = 2k + 1/2 - sqrt(16k^2+16k+1)/2 = 3 / (2 (4k + 2 + sqrt(16k^2+16k+1))),
+  // which lies between 3/(16k + 8) and 3/(16k + 4): decreasing, O(1/k).
+  const double limit = std::sqrt(3.0) - 1.5;
+  std::map<long, double> delta_by_k;
+  for (const auto& r : small_exploration().packings)
+    if (r.source == "builder" && r.member.class_id == "four-delta") delta_by_k[r.member.k] = delta_of(r);
+  ASSERT_GE(delta_by_k.size(), 5u);  // 4Delta(k) <= 60: k = 1..5
+  double previous = 1e9;
+  for (const auto& [k, delta] : delta_by_k) {
+    const double excess = delta - limit;
+    EXPECT_GT(excess, 3.0 / (16 * k + 8) - 1e-13) << k;
+    EXPECT_LT(excess, 3.0 / (16 * k + 4) + 1e-13) << k;
+    EXPECT_LT(delta, previous) << k;
+    previous = delta;
+  }
+}
+
+TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
+  const auto& result = small_exploration();
+  const fs::path dir = fs::temp_directory_path() / "tripack_explore_test";
+  fs::remove_all(dir);
+  report::write_explore_report(result, dir, {false, false});
+  // packings.csv: one row per packing, the file column names a file that exists.
+  std::ifstream csv(dir / "packings.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "n,rank,label,class,p,k,variant,d,L,delta,bonds,rattlers,certified,source,"
+                  "seconds,file");
+  std::size_t rows = 0, certified = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 16u) << line;
+    const auto& row = result.packings[rows++];
+    const PointsFile file = read_points_file((dir / f[15]).string());
+    const Packing start = packing_from_points(file, std::nullopt, std::stoll(f[0])).packing;
+    const pipeline::Analysis a = pipeline::analyze_packing(start, {});
+    // d is printed with 17 digits; the re-analysis polishes again from 21-digit coordinates.
+    EXPECT_NEAR(static_cast<double>(a.pattern.packing.d / std::stold(f[7]) - 1), 0.0, 1e-14) << line;
+    if (f[12] == "true") {
+      ++certified;
+      EXPECT_TRUE(a.certified()) << line;
+      EXPECT_EQ(a.pattern.bonds.size(), std::stoul(f[10])) << line;
+      EXPECT_EQ(a.pattern.rattlers.size(), std::stoul(f[11])) << line;
+    }
+    EXPECT_EQ(f[13], row.source);
+  }
+  EXPECT_EQ(rows, result.packings.size());
+  EXPECT_GT(certified, rows / 2);
+  EXPECT_TRUE(fs::exists(dir / "index.html"));
+  fs::remove_all(dir);
+}
+
+TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
+  pipeline::ExploreSettings s;
+  s.max_n = 30;
+  s.stress_set.clear();
+  s.large_terms.clear();
+  std::atomic<bool> cancel{false};
+  int calls = 0;
+  const auto result = pipeline::explore(catalogue(), s, cancel, [&](const pipeline::ExploreProgress&) {
+    if (++calls == 5) cancel = true;  // as Ctrl-C would, during the build stage
+  });
+  EXPECT_TRUE(result.interrupted);
+  EXPECT_TRUE(result.stages_done.empty());
+  // The fifth item had started when the flag was set (the flag is read between items): it
+  // finishes, nothing after it starts.
+  EXPECT_EQ(result.packings.size(), 5u);
+}
+
+}  // namespace
+}  // namespace tripack
