@@ -14,6 +14,8 @@ PKGS=(
   libcli11-dev         # command line
   libfmt-dev           # formatting
   nlohmann-json3-dev   # JSON output and input
+  libcairo2-dev        # packing diagrams (SVG, PNG, PDF) drawn like the paper's figures
+  fonts-dejavu-core    # the diagrams' font, named explicitly so labels look the same everywhere
   libgtest-dev googletest libbenchmark-dev
   chromium             # headless browser: the test renders the explorer's index.html
 )
