@@ -244,6 +244,19 @@ fi
 expect_output "compare 22" "the same packing" compare 22 --runs 10 --threads 2
 expect_output "compare 22 csv" ",true,true," compare 22 --runs 10 --threads 2 --csv
 
+# draw and --svg/--png/--pdf: the same input gives the same bytes (PDF date fixed).
+tmp=$(mktemp -d)
+"$TRIPACK" draw even-ripple --k 3 -o "$tmp/a.png" >/dev/null && "$TRIPACK" draw even-ripple --k 3 -o "$tmp/b.png" >/dev/null
+if [ -s "$tmp/a.png" ] && cmp -s "$tmp/a.png" "$tmp/b.png"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: draw png"; fi
+"$TRIPACK" build even-ripple --k 3 --svg "$tmp/t22a.svg" --pdf "$tmp/a.pdf" -o "$tmp/t22a.txt" >/dev/null
+"$TRIPACK" draw "$tmp/t22a.txt" --forces -o "$tmp/b.pdf" >/dev/null
+"$TRIPACK" build even-ripple --k 3 --pdf "$tmp/c.pdf" >/dev/null
+if grep -q '<svg' "$tmp/t22a.svg" && [ "$(head -c 4 "$tmp/b.pdf")" = "%PDF" ] && cmp -s "$tmp/a.pdf" "$tmp/c.pdf"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --svg/--pdf, draw FILE"; fi
+expect_error "draw: bad extension" "extension" draw even-ripple --k 3 -o "$tmp/x.gif"
+expect_error "draw: class without k" "needs --k" draw even-ripple -o "$tmp/x.png"
+rm -rf "$tmp"
+
 # A random start without growth would run to max_seconds doing nothing: refused in one line.
 expect_error "zero growth scene" "needs growth with a rate > 0" billiards --scene "$DATA/scenes/zero_growth.yaml"
 
