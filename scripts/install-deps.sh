@@ -14,6 +14,7 @@ PKGS=(
   libcli11-dev         # command line
   libfmt-dev           # formatting
   nlohmann-json3-dev   # JSON output and input
+  gnuplot-nox          # draws the delta(n) and accuracy plots (svg, pngcairo, pdfcairo terminals)
   libgtest-dev googletest libbenchmark-dev
 )
 missing=()
