@@ -16,6 +16,7 @@ PKGS=(
   nlohmann-json3-dev   # JSON output and input
   libcairo2-dev        # packing diagrams (SVG, PNG, PDF) drawn like the paper's figures
   fonts-dejavu-core    # the diagrams' font, named explicitly so labels look the same everywhere
+  gnuplot-nox          # draws the delta(n) and accuracy plots (svg, pngcairo, pdfcairo terminals)
   libgtest-dev googletest libbenchmark-dev
   chromium             # headless browser: the test renders the explorer's index.html
 )
