@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
-#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -261,7 +261,8 @@ std::function<void(const pipeline::ExploreProgress&)> explore_progress_line() {
   const bool tty = isatty(fileno(stderr));
   return [tty, last_stage = std::string()](const pipeline::ExploreProgress& p) mutable {
     if (!tty) {
-      if (p.stage != last_stage) std::cerr << fmt::format("explore: {} ({:.0f} s)\n", p.stage, p.elapsed);
+      if (p.stage != last_stage)
+        std::cerr << fmt::format("explore: {} ({:.0f} s)\n", p.stage, p.elapsed);
       last_stage = p.stage;
       return;
     }
@@ -323,17 +324,20 @@ int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
     request.file = o.what;
     if (!o.convention.empty()) {
       request.convention = parse_convention(o.convention);
-      if (!request.convention) throw std::invalid_argument("unknown convention '" + o.convention + "'");
+      if (!request.convention)
+        throw std::invalid_argument("unknown convention '" + o.convention + "'");
     }
     const auto result = pipeline::analyze_file(request);
-    for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
+    for (const auto& warning : result.warnings)
+      std::cerr << "tripack: warning: " << warning << "\n";
     diagram = {result.analysis.pattern, std::filesystem::path(o.what).stem().string(),
                format_significant(result.analysis.pattern.packing.d, 15),
                result.analysis.stress.forces};
   } else {
     if (o.k == kUnsetK)
       throw std::invalid_argument("draw: '" + o.what + "' is not a file; a class needs --k K");
-    const auto b = pipeline::build_and_certify(load_catalogue(g), {o.what, o.k, o.p, o.variant}, {});
+    const auto b =
+        pipeline::build_and_certify(load_catalogue(g), {o.what, o.k, o.p, o.variant}, {});
     diagram = {b.analysis ? b.analysis->pattern : b.pattern,
                pipeline::member_name(b.pattern.provenance),
                format_significant(b.pattern.packing.d, 15), forces_of(b.analysis)};

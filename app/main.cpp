@@ -110,9 +110,11 @@ Action add_check_formula(CLI::App& cli, const GlobalOptions& g, CheckFormulaOpti
 
 Action add_draw(CLI::App& cli, const GlobalOptions& g, DrawOptions& o) {
   auto* c = cli.add_subcommand(
-      "draw", "Diagram of a packing (a points file, analysed; or a class member, built), like the "
-              "paper's figures: shaded disks, unshaded rattlers, bond dots, labels, d");
-  c->add_option("what", o.what, "a points file (any layout of 'analyze') or a class id")->required();
+      "draw",
+      "Diagram of a packing (a points file, analysed; or a class member, built), like the "
+      "paper's figures: shaded disks, unshaded rattlers, bond dots, labels, d");
+  c->add_option("what", o.what, "a points file (any layout of 'analyze') or a class id")
+      ->required();
   c->add_option("--k", o.k, "class index k");
   c->add_option("--p", o.p, "matrix row p")->check(CLI::Range(1L, 1000000000L));
   c->add_option("--variant", o.variant, "variant");
@@ -131,7 +133,8 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
       "compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)");
   c->add_option("--max-n", o.max_n, "class members up to this n (default 300)")
       ->check(CLI::Range(2LL, 100000LL));
-  c->add_option("--runs", o.runs, "billiards runs per n (default 20)")->check(CLI::Range(1, 100000));
+  c->add_option("--runs", o.runs, "billiards runs per n (default 20)")
+      ->check(CLI::Range(1, 100000));
   c->add_option("--threads", o.threads, "parallel runs (default 2)")->check(CLI::Range(1, 256));
   c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
   c->add_option("--out", o.out, "report directory (default ./report)");
@@ -186,6 +189,8 @@ int main(int argc, char** argv) {
       add_check_formula(cli, g, check),
       add_billiards(cli, g, billiards),
       add_compare(cli, g, compare),
+      add_explore(cli, g, explore),
+      add_draw(cli, g, draw),
       [&] { return *classes ? cmd_classes(g, classes_out) : -1; },
       [&] { return *classify ? cmd_classify(g, classify_n, classify_out) : -1; },
       [&] { return *table ? cmd_table(g, table_k, table_out) : -1; }};

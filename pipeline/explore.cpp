@@ -14,16 +14,15 @@ namespace tripack::pipeline {
 
 namespace {
 
-// Relative cost of the work items, for the progress fraction and the estimate (seconds on 2
-// cores, measured on this project's machines: docs/performance.md "Explorer").
+// Cost of the work items in seconds on 2 cores, fitted to an explore --max-n 250 run on this
+// project's machines (docs/performance.md "Explorer"): a build + certificate ~2.3e-5 n^1.5 s
+// (n = 25: 3 ms, 225: 72 ms, 1012: 0.85 s); a billiards run + analysis ~1.5e-3 n s at growth
+// rate 0.01, growing as rate^-0.75 (n = 254 at rate 1e-4: ~11 s a run).
 double build_cost(long long n) {
-  return 2e-3 + 1.5e-6 * std::pow(static_cast<double>(n), 1.6);
+  return 2.3e-5 * std::pow(static_cast<double>(n), 1.5);
 }
 double search_cost(long long n, int runs, int threads, double rate) {
-  // A run's events grow ~ n / rate (the disks must grow to jam), its analysis ~ n^1.5.
-  const double per_run = 2e-8 * static_cast<double>(n) * std::log(static_cast<double>(n) + 2) *
-                             (static_cast<double>(n) / rate) * 5 +
-                         3e-5 * std::pow(static_cast<double>(n), 1.5);
+  const double per_run = 1.5e-3 * static_cast<double>(n) * std::pow(0.01 / rate, 0.75);
   return per_run * runs / std::max(1, threads);
 }
 
@@ -66,9 +65,9 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   for (long long n : plan.searches) {
     const Scene scene = default_scene(static_cast<int>(n));
     const double rate = scene.growth ? scene.growth->rate : 0.01;
-    plan.cost += search_cost(n, n > s.billiards_max_n && n > s.class_billiards_max_n ? s.large_runs
-                                                                                     : s.runs,
-                             s.threads, rate);
+    plan.cost +=
+        search_cost(n, n > s.billiards_max_n && n > s.class_billiards_max_n ? s.large_runs : s.runs,
+                    s.threads, rate);
   }
   return plan;
 }
@@ -110,10 +109,12 @@ ExplorePacking packing_of_search(const DistinctPacking& x, std::size_t rank, dou
 }
 
 // The best builder row for each n (largest d).
-std::map<long long, const ExplorePacking*> best_builder_by_n(const std::vector<ExplorePacking>& rows) {
+std::map<long long, const ExplorePacking*> best_builder_by_n(
+    const std::vector<ExplorePacking>& rows) {
   std::map<long long, const ExplorePacking*> best;
   for (const auto& r : rows)
-    if (r.source == "builder" && (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d))
+    if (r.source == "builder" &&
+        (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d))
       best[r.n] = &r;
   return best;
 }
@@ -224,8 +225,9 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   for (const auto& request : plan.builds) {
     if (cancel) break;
     const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
-    report("build", fmt::format("{} (n = {})", member_name({request.class_id, request.k,
-                                                            request.p, request.variant}), n));
+    report("build",
+           fmt::format("{} (n = {})",
+                       member_name({request.class_id, request.k, request.p, request.variant}), n));
     const auto t0 = Clock::now();
     try {
       try {
@@ -242,10 +244,9 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
         result.packings.push_back(std::move(row));
       }
     } catch (const std::exception& e) {
-      result.errors.push_back(fmt::format("build {}: {}", member_name({request.class_id,
-                                                                       request.k, request.p,
-                                                                       request.variant}),
-                                          e.what()));
+      result.errors.push_back(fmt::format(
+          "build {}: {}", member_name({request.class_id, request.k, request.p, request.variant}),
+          e.what()));
     }
     done += build_cost(n);
   }

@@ -17,14 +17,14 @@
 namespace tripack::pipeline {
 
 struct ExploreSettings {
-  long long max_n = 300;            // class members built and certified up to this n
-  long long billiards_max_n = 40;   // billiards for every n = 2 .. this
+  long long max_n = 300;                 // class members built and certified up to this n
+  long long billiards_max_n = 40;        // billiards for every n = 2 .. this
   long long class_billiards_max_n = 60;  // and for every class member up to this
   std::vector<long long> stress_set{254, 255, 256, 258, 260};  // matrix stress set, when <= max_n
   // A few large class members, built and certified (4Delta(22): n = 1012; Delta(40): n = 820).
   std::vector<BuildRequest> large_terms{{"four-delta", 22, 0, ""}, {"hexagonal", 40, 0, ""}};
-  int runs = 20;          // billiards runs per n up to billiards_max_n
-  int large_runs = 4;     // per n of the stress set (slow growth: each run takes seconds)
+  int runs = 20;       // billiards runs per n up to billiards_max_n
+  int large_runs = 4;  // per n of the stress set (slow growth: each run takes seconds)
   int threads = 2;
   std::uint64_t seed = 1;
 };
@@ -32,16 +32,16 @@ struct ExploreSettings {
 // One row of packings.csv: a built class member or a distinct billiards packing.
 struct ExplorePacking {
   long long n = 0;
-  int rank = 0;         // billiards: 1 = best found; builder: the rank of the same packing
-                        // among the billiards ones, 0 when billiards did not find it (or ran not)
-  std::string label;    // billiards label (t22a); builder: the label of the same billiards
-                        // packing, else "class-k[-p][-variant]"
-  Provenance member;    // builder rows (class_id empty for billiards rows)
-  Pattern pattern;      // polished, bonds and rattlers from the geometry when certified
+  int rank = 0;       // billiards: 1 = best found; builder: the rank of the same packing
+                      // among the billiards ones, 0 when billiards did not find it (or ran not)
+  std::string label;  // billiards label (t22a); builder: the label of the same billiards
+                      // packing, else "class-k[-p][-variant]"
+  Provenance member;  // builder rows (class_id empty for billiards rows)
+  Pattern pattern;    // polished, bonds and rattlers from the geometry when certified
   std::vector<long double> forces;  // stress certificate per bond (empty when not certified)
   bool certified = false;
   std::string verdict;
-  std::string source;   // "builder" or "billiards"
+  std::string source;  // "builder" or "billiards"
   double seconds = 0;
   bool proven_optimal = false;  // Delta(k) (Oler) or n <= 15 (GL1995 Sec.1)
 };
@@ -68,8 +68,8 @@ struct ClassGap {
 };
 
 struct ExploreProgress {
-  std::string stage;  // "build", "billiards", ...
-  std::string item;   // what is being done now
+  std::string stage;    // "build", "billiards", ...
+  std::string item;     // what is being done now
   double fraction = 0;  // of the whole exploration's estimated cost, 0..1
   double elapsed = 0;   // seconds
 };

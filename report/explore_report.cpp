@@ -48,13 +48,13 @@ std::string packings_csv(const ExploreResult& result) {
   out << "n,rank,label,class,p,k,variant,d,L,delta,bonds,rattlers,certified,source,seconds,file\n";
   for (const auto& r : result.packings) {
     const long double d = r.pattern.packing.d;
-    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n, r.rank,
-                       csv_field(r.label), class_of(r), r.member.p ? std::to_string(r.member.p) : "",
-                       r.member.class_id.empty() ? "" : std::to_string(r.member.k),
-                       csv_field(r.member.variant), digits17(d), digits17(1 / d),
-                       digits17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
-                       r.pattern.rattlers.size(), r.certified ? "true" : "false", r.source,
-                       r.seconds, packing_file_name(r));
+    out << fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n, r.rank, csv_field(r.label),
+        class_of(r), r.member.p ? std::to_string(r.member.p) : "",
+        r.member.class_id.empty() ? "" : std::to_string(r.member.k), csv_field(r.member.variant),
+        digits17(d), digits17(1 / d), digits17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
+        r.pattern.rattlers.size(), r.certified ? "true" : "false", r.source, r.seconds,
+        packing_file_name(r));
   }
   return out.str();
 }
@@ -63,28 +63,28 @@ std::string packings_json(const ExploreResult& result) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& r : result.packings) {
     const long double d = r.pattern.packing.d;
-    rows.push_back({{"n", r.n},
-                    {"rank", r.rank},
-                    {"label", r.label},
-                    {"class", r.member.class_id.empty() ? nlohmann::json(nullptr)
-                                                        : nlohmann::json(r.member.class_id)},
-                    {"p", r.member.p ? nlohmann::json(r.member.p) : nlohmann::json(nullptr)},
-                    {"k", r.member.class_id.empty() ? nlohmann::json(nullptr)
-                                                    : nlohmann::json(r.member.k)},
-                    {"variant", r.member.variant.empty() ? nlohmann::json(nullptr)
-                                                         : nlohmann::json(r.member.variant)},
-                    {"d", digits17(d)},
-                    {"L", digits17(1 / d)},
-                    {"delta", digits17(oler_delta(r.n, 1 / d))},
-                    {"bonds", r.pattern.bonds.size()},
-                    {"rattlers", r.pattern.rattlers.size()},
-                    {"rattler_indices", r.pattern.rattlers},
-                    {"certified", r.certified},
-                    {"verdict", r.verdict},
-                    {"proven_optimal", r.proven_optimal},
-                    {"source", r.source},
-                    {"seconds", r.seconds},
-                    {"file", packing_file_name(r)}});
+    rows.push_back(
+        {{"n", r.n},
+         {"rank", r.rank},
+         {"label", r.label},
+         {"class",
+          r.member.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.class_id)},
+         {"p", r.member.p ? nlohmann::json(r.member.p) : nlohmann::json(nullptr)},
+         {"k", r.member.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.k)},
+         {"variant",
+          r.member.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.variant)},
+         {"d", digits17(d)},
+         {"L", digits17(1 / d)},
+         {"delta", digits17(oler_delta(r.n, 1 / d))},
+         {"bonds", r.pattern.bonds.size()},
+         {"rattlers", r.pattern.rattlers.size()},
+         {"rattler_indices", r.pattern.rattlers},
+         {"certified", r.certified},
+         {"verdict", r.verdict},
+         {"proven_optimal", r.proven_optimal},
+         {"source", r.source},
+         {"seconds", r.seconds},
+         {"file", packing_file_name(r)}});
   }
   nlohmann::json j{{"packings", rows},
                    {"interrupted", result.interrupted},
@@ -143,11 +143,16 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
 std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -158,7 +163,8 @@ std::string html_page(const ExploreResult& result, bool diagrams) {
        "<title>tripack explore</title>\n<style>\n"
        "body{font-family:sans-serif;margin:1.5em;max-width:1200px}"
        "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;padding:2px 6px;"
-       "text-align:right}th{background:#eee}.warn{background:#fdd;padding:.5em;border:1px solid #c00}"
+       "text-align:right}th{background:#eee}.warn{background:#fdd;padding:.5em;border:1px solid "
+       "#c00}"
        ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0;width:220px;font-size:11px}"
        ".grid img{width:220px}\n</style></head><body>\n";
   h << "<h1>Dense packings of n equal disks in an equilateral triangle</h1>\n";
@@ -169,9 +175,9 @@ std::string html_page(const ExploreResult& result, bool diagrams) {
   h << fmt::format(
       "<p>max n {}, billiards for n &le; {} and class members &le; {}, {} runs per n (stress set: "
       "{} runs), seed {}; {} packings, {} comparisons; {:.1f} s.</p>\n",
-      result.settings.max_n, result.settings.billiards_max_n,
-      result.settings.class_billiards_max_n, result.settings.runs, result.settings.large_runs,
-      result.settings.seed, result.packings.size(), result.comparisons.size(), result.seconds);
+      result.settings.max_n, result.settings.billiards_max_n, result.settings.class_billiards_max_n,
+      result.settings.runs, result.settings.large_runs, result.settings.seed,
+      result.packings.size(), result.comparisons.size(), result.seconds);
   for (const auto& e : result.errors) h << "<p class=\"warn\">" << html_escape(e) << "</p>\n";
   h << "<h2>&delta;(n) = L(n) &minus; t(n)</h2>\n<p><img src=\"delta.svg\" alt=\"delta(n) plot\" "
        "width=\"900\"></p>\n<p>Data: <a href=\"delta.csv\">delta.csv</a>, script: <a "
@@ -193,11 +199,11 @@ std::string html_page(const ExploreResult& result, bool diagrams) {
   h << "</table>\n<h2>Class gaps L(n(k)+1) &minus; L(n(k))</h2>\n<table><tr><th>class</th><th>p"
        "</th><th>k</th><th>n</th><th>difference</th><th>n+1 from</th><th>paper: tight</th></tr>\n";
   for (const auto& g : result.class_gaps)
-    h << fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.6g}</td><td>{}</td>"
-                     "<td>{}</td></tr>\n",
-                     g.class_id, g.p ? std::to_string(g.p) : "", g.k, g.n,
-                     static_cast<double>(g.L_next - g.L_n), html_escape(g.next_source),
-                     html_escape(g.claim_tight));
+    h << fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.6g}</td><td>{}</td>"
+        "<td>{}</td></tr>\n",
+        g.class_id, g.p ? std::to_string(g.p) : "", g.k, g.n, static_cast<double>(g.L_next - g.L_n),
+        html_escape(g.next_source), html_escape(g.claim_tight));
   h << "</table>\n<h2>Packings</h2>\n<table><tr><th>n</th><th>label</th><th>source</th><th>d</th>"
        "<th>&delta;</th><th>bonds</th><th>rattlers</th><th>certified</th><th>file</th></tr>\n";
   for (const auto& r : result.packings) {
@@ -256,7 +262,8 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
   write_file(dir / "packings.json", packings_json(result));
   write_file(dir / "compare.csv", compare_csv(result));
   write_file(dir / "classes.csv", classes_csv(result));
-  for (const auto& r : result.packings) write_pattern((dir / packing_file_name(r)).string(), r.pattern);
+  for (const auto& r : result.packings)
+    write_pattern((dir / packing_file_name(r)).string(), r.pattern);
   if (options.diagrams) {
     say(fmt::format("diagrams: {} packings", result.packings.size()));
     for (const auto& r : result.packings) {

@@ -13,8 +13,8 @@
 namespace tripack::report {
 
 struct ExploreReportOptions {
-  bool diagrams = true;        // one SVG + PNG per packing
-  bool forces = true;          // also a forces diagram of each certified builder packing
+  bool diagrams = true;  // one SVG + PNG per packing
+  bool forces = true;    // also a forces diagram of each certified builder packing
 };
 
 // Writes `dir` (created if needed). Throws a one-line error when the directory cannot be written

@@ -65,7 +65,8 @@ TEST(Explore, DeltaOfFourDeltaDecreasesToSqrt3MinusThreeHalvesAsOneOverK) {
   const double limit = std::sqrt(3.0) - 1.5;
   std::map<long, double> delta_by_k;
   for (const auto& r : small_exploration().packings)
-    if (r.source == "builder" && r.member.class_id == "four-delta") delta_by_k[r.member.k] = delta_of(r);
+    if (r.source == "builder" && r.member.class_id == "four-delta")
+      delta_by_k[r.member.k] = delta_of(r);
   ASSERT_GE(delta_by_k.size(), 5u);  // 4Delta(k) <= 60: k = 1..5
   double previous = 1e9;
   for (const auto& [k, delta] : delta_by_k) {
@@ -86,8 +87,9 @@ TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
   std::ifstream csv(dir / "packings.csv");
   std::string line;
   std::getline(csv, line);
-  EXPECT_EQ(line, "n,rank,label,class,p,k,variant,d,L,delta,bonds,rattlers,certified,source,"
-                  "seconds,file");
+  EXPECT_EQ(line,
+            "n,rank,label,class,p,k,variant,d,L,delta,bonds,rattlers,certified,source,"
+            "seconds,file");
   std::size_t rows = 0, certified = 0;
   while (std::getline(csv, line)) {
     std::vector<std::string> f;
@@ -99,7 +101,8 @@ TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
     const Packing start = packing_from_points(file, std::nullopt, std::stoll(f[0])).packing;
     const pipeline::Analysis a = pipeline::analyze_packing(start, {});
     // d is printed with 17 digits; the re-analysis polishes again from 21-digit coordinates.
-    EXPECT_NEAR(static_cast<double>(a.pattern.packing.d / std::stold(f[7]) - 1), 0.0, 1e-14) << line;
+    EXPECT_NEAR(static_cast<double>(a.pattern.packing.d / std::stold(f[7]) - 1), 0.0, 1e-14)
+        << line;
     if (f[12] == "true") {
       ++certified;
       EXPECT_TRUE(a.certified()) << line;
@@ -121,9 +124,10 @@ TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
   s.large_terms.clear();
   std::atomic<bool> cancel{false};
   int calls = 0;
-  const auto result = pipeline::explore(catalogue(), s, cancel, [&](const pipeline::ExploreProgress&) {
-    if (++calls == 5) cancel = true;  // as Ctrl-C would, during the build stage
-  });
+  const auto result =
+      pipeline::explore(catalogue(), s, cancel, [&](const pipeline::ExploreProgress&) {
+        if (++calls == 5) cancel = true;  // as Ctrl-C would, during the build stage
+      });
   EXPECT_TRUE(result.interrupted);
   EXPECT_TRUE(result.stages_done.empty());
   // The fifth item had started when the flag was set (the flag is read between items): it
