@@ -505,9 +505,10 @@ HardCase large_n_case(const Catalogue& catalogue) {
                           s.base.pattern.rattlers.size() == best->pattern.rattlers.size();
     all_same = all_same && s.same && as_built;
     spread = std::max(spread, s.d_spread);
-    members += fmt::format("{}{} {}: {} bonds, {} rattlers{}, {}{}", members.empty() ? "" : "; ", n,
-                           member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
-                           s.base.pattern.rattlers.size(), as_built ? "" : " (NOT as built)",
+    const std::size_t rattlers = s.base.pattern.rattlers.size();
+    members += fmt::format("{}{} {}: {} bonds, {} rattler{}{}, {}{}", members.empty() ? "" : "; ",
+                           n, member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
+                           rattlers, rattlers == 1 ? "" : "s", as_built ? "" : " (NOT as built)",
                            verdict_word(s.base), s.same ? "" : " (" + s.difference + ")");
   }
   return {"large n 254-260",
