@@ -17,13 +17,13 @@ struct AccuracyRow {
   long long n = 0;
   std::string label;   // packing reached (t22a, ...)
   std::string method;  // "billiards", "polish (long double)", "mpfr"
-  std::string
-      target;  // "gap 1e-3", ..., "gap 1e-12", "double", "30 digits", "50 digits", "100 digits"
+  // "gap 1e-3", ..., "gap 1e-12", "double", "30 digits", "50 digits", "100 digits"
+  std::string target;
   double seconds = 0;  // wall time of that step (billiards: from the random start; polish: from the
                        // billiards end state; mpfr: from the long double polish)
   double digits = 0;   // correct significant digits of d, against a 110-digit MPFR reference of
-                       // the same packing's bond system (NaN: no bond system pins d, see below)
-  std::string reference;  // that reference d, 20 significant digits ("" when there is none)
+                       // the same packing's bond system; NaN when no bond system pins d there
+  std::string reference;  // that reference d to 20 decimals ("" when there is none)
 };
 
 struct HardCase {
