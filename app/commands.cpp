@@ -288,6 +288,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   settings.runs = o.runs;
   settings.threads = o.threads;
   settings.seed = o.seed;
+  settings.accuracy = o.accuracy;
   report::find_gnuplot();  // before any work: a missing gnuplot is one line, not a lost hour
   const std::filesystem::path dir(o.out);
   std::error_code ec;

@@ -81,6 +81,7 @@ struct ExploreOptions {
   int threads = 2;
   std::uint64_t seed = 1;
   std::string out = "report";
+  bool accuracy = true;
 };
 // `tripack draw FILE|CLASS`: a diagram of a points file (analysed) or a class member (built).
 struct DrawOptions {

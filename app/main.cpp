@@ -138,6 +138,7 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
   c->add_option("--threads", o.threads, "parallel runs (default 2)")->check(CLI::Range(1, 256));
   c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
   c->add_option("--out", o.out, "report directory (default ./report)");
+  c->add_flag("!--no-accuracy", o.accuracy, "skip the accuracy-against-time study (~20 s)");
   return [c, &g, &o] { return *c ? cmd_explore(g, o) : -1; };
 }
 

@@ -26,6 +26,9 @@ double search_cost(long long n, int runs, int threads, double rate) {
   return per_run * runs / std::max(1, threads);
 }
 
+// The accuracy study with its hard cases: ~20 s on 2 cores (measured with the default settings).
+constexpr double kAccuracyCost = 20;
+
 bool proven_optimal(long long n) {
   if (n <= 15) return true;  // GL1995 Sec.1: optimal packings known (proved) for n <= 15
   const auto k = static_cast<long long>(std::llround((std::sqrt(8.0 * n + 1) - 1) / 2));
@@ -62,6 +65,7 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
     plan.cost += build_cost(catalogue.n_of(catalogue.find(b.class_id), b.k, b.p));
   }
   plan.searches.assign(search_n.begin(), search_n.end());
+  if (s.accuracy) plan.cost += kAccuracyCost;
   for (long long n : plan.searches) {
     const Scene scene = default_scene(static_cast<int>(n));
     const double rate = scene.growth ? scene.growth->rate : 0.01;
@@ -275,6 +279,19 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
                         search.scene.growth ? search.scene.growth->rate : 0.01);
   }
   if (!cancel) result.stages_done.push_back("billiards");
+  if (settings.accuracy && !cancel) {
+    report("accuracy", "digits against time, hard cases");
+    try {
+      AccuracySettings accuracy;
+      accuracy.seed = settings.seed;
+      result.accuracy = measure_accuracy(
+          catalogue, accuracy, [&](const std::string& stage) { report("accuracy", stage); });
+      result.stages_done.push_back("accuracy");
+    } catch (const std::exception& e) {
+      result.errors.push_back(std::string("accuracy: ") + e.what());
+    }
+    done += kAccuracyCost;
+  }
   std::stable_sort(result.packings.begin(), result.packings.end(),
                    [](const ExplorePacking& a, const ExplorePacking& b) {
                      if (a.n != b.n) return a.n < b.n;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pipeline/accuracy.hpp"
 #include "pipeline/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/compare.hpp"
@@ -27,6 +28,7 @@ struct ExploreSettings {
   int large_runs = 4;  // per n of the stress set (slow growth: each run takes seconds)
   int threads = 2;
   std::uint64_t seed = 1;
+  bool accuracy = true;  // the accuracy-against-time study and the hard cases (SPEC §6)
 };
 
 // One row of packings.csv: a built class member or a distinct billiards packing.
@@ -79,6 +81,7 @@ struct ExploreResult {
   std::vector<ExplorePacking> packings;  // by n, builder rows first, then billiards by rank
   std::vector<ExploreComparison> comparisons;
   std::vector<ClassGap> class_gaps;
+  std::optional<AccuracyStudy> accuracy;
   std::vector<std::string> stages_done;
   std::vector<std::string> errors;  // one line each: an item that failed (the rest went on)
   bool interrupted = false;

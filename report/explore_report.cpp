@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -140,6 +141,41 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
   return points;
 }
 
+std::string accuracy_csv(const AccuracyStudy& study) {
+  std::ostringstream out;
+  out << "n,label,method,target,seconds,digits,reference\n";
+  for (const auto& r : study.rows)
+    out << fmt::format("{},{},{},{},{:.6g},{},{}\n", r.n, csv_field(r.label), csv_field(r.method),
+                       csv_field(r.target), r.seconds,
+                       std::isfinite(r.digits) ? fmt::format("{:.2f}", r.digits) : "", r.reference);
+  out << "\n# hard cases (SPEC section 6): name,stable,what,evidence\n";
+  for (const auto& h : study.hard_cases)
+    out << fmt::format("# {},{},{},{}\n", csv_field(h.name), h.stable, csv_field(h.what),
+                       csv_field(h.evidence));
+  return out.str();
+}
+
+// One curve per n: digits against the cumulative time of billiards (each gap), then the long
+// double polish and MPFR from the billiards end state.
+std::vector<AccuracyPoint> accuracy_points(const AccuracyStudy& study) {
+  std::vector<AccuracyPoint> points;
+  std::map<long long, double> billiards_end, polished_at;
+  for (const auto& r : study.rows) {
+    const std::string series = fmt::format("n = {}", r.n);
+    double at = r.seconds;
+    if (r.method == "billiards") {
+      billiards_end[r.n] = std::max(billiards_end[r.n], r.seconds);
+    } else if (r.method.rfind("polish", 0) == 0) {
+      at = billiards_end[r.n] + r.seconds;
+      polished_at[r.n] = at;
+    } else {
+      at = polished_at[r.n] + r.seconds;
+    }
+    if (std::isfinite(r.digits) && at > 0) points.push_back({series, at, r.digits});
+  }
+  return points;
+}
+
 std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -196,7 +232,28 @@ std::string html_page(const ExploreResult& result, bool diagrams) {
         static_cast<double>(c.d_relative_difference), c.bonds_builder, c.bonds_billiards,
         c.rattlers_builder, c.rattlers_billiards,
         c.same_packing ? "yes (" + c.symmetry + ")" : (c.same_contact_graph ? "graph only" : "no"));
-  h << "</table>\n<h2>Class gaps L(n(k)+1) &minus; L(n(k))</h2>\n<table><tr><th>class</th><th>p"
+  h << "</table>\n";
+  if (result.accuracy) {
+    h << "<h2>Accuracy against time</h2>\n<p><img src=\"accuracy-plot.svg\" alt=\"accuracy plot\" "
+         "width=\"900\"></p>\n<p>Digits of d against seconds: billiards alone to a relative gap "
+         "of 1e-3 .. 1e-12, then the long double polish and MPFR to 30, 50, 100 digits (<a "
+         "href=\"accuracy.csv\">accuracy.csv</a>).</p>\n<table><tr><th>n</th><th>packing</th>"
+         "<th>method</th><th>target</th><th>seconds</th><th>digits</th></tr>\n";
+    for (const auto& r : result.accuracy->rows)
+      h << fmt::format(
+          "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3g}</td><td>{}"
+          "</td></tr>\n",
+          r.n, html_escape(r.label), html_escape(r.method), html_escape(r.target), r.seconds,
+          std::isfinite(r.digits) ? fmt::format("{:.1f}", r.digits) : "-");
+    h << "</table>\n<h3>Hard cases</h3>\n<table><tr><th>case</th><th>what</th><th>stable</th>"
+         "<th>how we know</th></tr>\n";
+    for (const auto& c : result.accuracy->hard_cases)
+      h << fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                       html_escape(c.name), html_escape(c.what), c.stable ? "yes" : "NO",
+                       html_escape(c.evidence));
+    h << "</table>\n";
+  }
+  h << "<h2>Class gaps L(n(k)+1) &minus; L(n(k))</h2>\n<table><tr><th>class</th><th>p"
        "</th><th>k</th><th>n</th><th>difference</th><th>n+1 from</th><th>paper: tight</th></tr>\n";
   for (const auto& g : result.class_gaps)
     h << fmt::format(
@@ -275,6 +332,12 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
   }
   say("plot: delta.svg, delta.png, delta.pdf");
   plot_delta(delta_points(result), dir);
+  if (result.accuracy) {
+    say("accuracy: accuracy.csv, accuracy.svg, accuracy.png, accuracy.pdf");
+    const auto points = accuracy_points(*result.accuracy);
+    if (!points.empty()) plot_accuracy(points, dir, "accuracy-plot");
+    write_file(dir / "accuracy.csv", accuracy_csv(*result.accuracy));
+  }
   say("index.html");
   write_file(dir / "index.html", html_page(result, options.diagrams));
 }
