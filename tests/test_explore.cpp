@@ -36,6 +36,7 @@ const pipeline::ExploreResult& small_exploration() {
     s.stress_set.clear();
     s.large_terms.clear();
     s.runs = 6;
+    s.accuracy = false;  // tests/test_accuracy.cpp covers it
     std::atomic<bool> cancel{false};
     return pipeline::explore(catalogue(), s, cancel);
   }();
@@ -122,6 +123,7 @@ TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
   s.max_n = 30;
   s.stress_set.clear();
   s.large_terms.clear();
+  s.accuracy = false;
   std::atomic<bool> cancel{false};
   int calls = 0;
   const auto result =
