@@ -106,10 +106,36 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
 
 }  // namespace
 
+// The default growth protocol against n, chosen from the hit-rate table of docs/performance.md
+// ("Billiards defaults against n (issue 9)", bench/hit_rates.sh): the fraction of runs from random
+// starts that jam in the best known packing, and the CPU time per hit. Constant 0.01 is good at
+// small n (t22a in 27% of runs, 0.04 s per hit) but fails at large n (t254a in 0 of 64 runs;
+// slower constant rates hit it at 6.5 s per hit). What matters is the rate while the estimated
+// gap 2/p is between 0.1 and 0.01 (where the disks order): slow there alone, fast before and after
+// (each decade of gap below costs about as many events: constant 1e-4 costs 13x the events of the
+// 1e-4 window at n = 254 for the same hit fraction).
+// Best rates in that window, per hit: 1e-3 at n = 79 (t79a in 66% of runs; 1.8e-3: 38%),
+// 1e-3..3e-4 at 121, 1e-4 at 254 (t254a in 44% of runs, 2.1 s per hit). The window rate
+// (2.5 / n)^2 runs through those (1.0e-3, 4.3e-4, 9.7e-5; as measured: t79a in 62% of runs,
+// t254a in 59%, 1.5 s per hit, against 5% and 0 for constant 0.01). Up to n = 40 the default is
+// exactly the old constant 0.01, no window: explorers run many small n with many runs each, and the
+// window would double the cost of a run there (at n = 22 it raises the hits from 27% to 53% at
+// about the same cost per hit). The rate is not taken below 3e-5, the slowest rate measured
+// (from n = 457 on).
+double default_window_rate(int n) {
+  if (n <= kDefaultFastUpTo) return kDefaultGrowthRate;
+  const double r = std::pow(2.5 / n, 2);
+  return std::clamp(r, kDefaultSlowestRate, kDefaultGrowthRate);
+}
+
 Scene default_scene(int n) {
   Scene s;
   s.n = n;
   s.growth = GrowthEffect{};
+  s.growth->rate = kDefaultGrowthRate;
+  if (n > kDefaultFastUpTo)
+    s.growth->schedule = {{kDefaultWindow[0], default_window_rate(n)},
+                          {kDefaultWindow[1], kDefaultGrowthRate}};
   s.thermostat = ThermostatEffect{};
   return s;
 }

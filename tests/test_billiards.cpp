@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "sim/billiards.hpp"
+#include "sim/effects.hpp"
 #include "sim/scene.hpp"
 
 namespace tripack {
@@ -368,6 +369,71 @@ TEST(Billiards, GrowthScheduleChangesTheRate) {
   const BilliardsResult q = run_billiards(never, rng2);
   expect_clean_jam(q);
   EXPECT_EQ(q.growth_rate, 0.01);
+}
+
+// The built-in growth against n (docs/performance.md, "Billiards defaults against n (issue 9)"):
+// up to n = 40 the old constant 0.01 (small n keep their cost per run); beyond, 0.01 except while
+// the estimated gap is in [0.01, 0.1), where the disks order, at a rate that falls with n, about
+// 1e-3 at n = 79 and 1e-4 at n = 254 (where constant 0.01 never reached t254a in 64 runs), and
+// never below 3e-5 (the slowest rate measured).
+TEST(Billiards, DefaultGrowthSlowsOnlyTheOrderingWindowAndMoreWithN) {
+  auto slowest = [](const Scene& s) {
+    double r = s.growth->rate;
+    for (const auto& st : s.growth->schedule) r = std::min(r, st.rate);
+    return r;
+  };
+  for (int n = 1; n <= 40; ++n) {
+    const Scene s = default_scene(n);
+    ASSERT_TRUE(s.growth && s.thermostat) << n;
+    EXPECT_EQ(s.growth->rate, 0.01) << n;
+    EXPECT_TRUE(s.growth->schedule.empty()) << n;
+  }
+  double previous = 0.01;
+  for (int n = 41; n <= 3000; ++n) {
+    const Scene s = default_scene(n);
+    ASSERT_TRUE(s.growth && s.thermostat) << n;
+    EXPECT_NO_THROW(validate_scene(s)) << n;
+    const double window = slowest(s);
+    EXPECT_LE(window, previous) << n;  // never faster for more disks
+    EXPECT_LT(window, 0.01) << n;
+    EXPECT_GE(window, 3e-5) << n;
+    previous = window;
+    // As the engine reads the schedule: fast before the window, slow in it, fast after it.
+    const auto rate_at = [&](double gap) {
+      return sim_detail::scheduled_rate(s.growth->rate, s.growth->schedule, gap);
+    };
+    EXPECT_EQ(rate_at(0.5), 0.01) << n;
+    EXPECT_EQ(rate_at(0.11), 0.01) << n;
+    EXPECT_EQ(rate_at(0.09), window) << n;
+    EXPECT_EQ(rate_at(0.011), window) << n;
+    EXPECT_EQ(rate_at(0.009), 0.01) << n;
+    EXPECT_EQ(rate_at(1e-12), 0.01) << n;
+  }
+  EXPECT_GT(slowest(default_scene(41)), 1e-3);  // no sudden drop past 40
+  EXPECT_NEAR(slowest(default_scene(79)), 1e-3, 0.1e-3);
+  EXPECT_NEAR(slowest(default_scene(254)), 1e-4, 0.1e-4);
+  EXPECT_EQ(slowest(default_scene(3000)), 3e-5);
+}
+
+// What the window is for: from random starts at n = 79 the default jams in t79a (GL1995's
+// d(79) = 0.0871159038791759) far more often than constant 0.01 (hit-rate table: 62% of 32 runs
+// against 5% of 64; billiards d before any polish, which is within ~1e-13 of the jam's).
+TEST(Billiards, DefaultGrowthFindsT79aMoreOftenThanConstantRate) {
+  const long double t79a = 0.0871159038791759L;
+  Scene constant = default_scene(79);
+  constant.growth->schedule.clear();
+  int hits_default = 0, hits_constant = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    std::mt19937_64 a(seed), b(seed);
+    const BilliardsResult rd = run_billiards(default_scene(79), a);
+    const BilliardsResult rc = run_billiards(constant, b);
+    expect_clean_jam(rd);
+    expect_clean_jam(rc);
+    hits_default += std::fabs(rd.packing.d / t79a - 1) < 1e-9L;
+    hits_constant += std::fabs(rc.packing.d / t79a - 1) < 1e-9L;
+  }
+  EXPECT_GE(hits_default, 4);
+  EXPECT_GT(hits_default, 2 * hits_constant);
 }
 
 // Shaking a jammed state at fixed size: the disks that hardly collide are the rattlers, and a
