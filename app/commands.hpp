@@ -77,7 +77,7 @@ struct BilliardsCommandOptions {
 
 struct ExploreOptions {
   long long max_n = 300;
-  int runs = 20;
+  int runs = 50;
   int threads = 2;
   std::uint64_t seed = 1;
   std::string out = "report";

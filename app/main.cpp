@@ -133,7 +133,7 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
       "compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)");
   c->add_option("--max-n", o.max_n, "class members up to this n (default 300)")
       ->check(CLI::Range(2LL, 100000LL));
-  c->add_option("--runs", o.runs, "billiards runs per n (default 20)")
+  c->add_option("--runs", o.runs, "billiards runs per n <= 60 (default 50)")
       ->check(CLI::Range(1, 100000));
   c->add_option("--threads", o.threads, "parallel runs (default 2)")->check(CLI::Range(1, 256));
   c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");

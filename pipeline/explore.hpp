@@ -24,8 +24,8 @@ struct ExploreSettings {
   std::vector<long long> stress_set{254, 255, 256, 258, 260};  // matrix stress set, when <= max_n
   // A few large class members, built and certified (4Delta(22): n = 1012; Delta(40): n = 820).
   std::vector<BuildRequest> large_terms{{"four-delta", 22, 0, ""}, {"hexagonal", 40, 0, ""}};
-  int runs = 20;       // billiards runs per n up to billiards_max_n
-  int large_runs = 4;  // per n of the stress set (slow growth: each run takes seconds)
+  int runs = 50;       // billiards runs per n up to billiards_max_n and class members <= 60
+  int large_runs = 8;  // per n of the stress set (slower growth: ~1 s a run at n = 254)
   int threads = 2;
   std::uint64_t seed = 1;
   bool accuracy = true;  // the accuracy-against-time study and the hard cases (SPEC §6)

@@ -129,9 +129,14 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
     if (r.source == "billiards" && r.rank == 1) billiards_best[r.n] = &r;
   }
   for (const auto& r : result.packings) {
-    if (r.source != "builder" || !seen.insert({r.member.class_id, r.n}).second) continue;
+    if (r.source != "builder" ||
+        !seen.insert({r.member.class_id + std::to_string(r.member.p), r.n}).second)
+      continue;
     const double delta = static_cast<double>(oler_delta(r.n, 1 / r.pattern.packing.d));
-    points.push_back({r.n, delta, r.member.class_id, r.proven_optimal, false});
+    // The matrix class is two-parametric: one line per row p (GL1995: rows are tight).
+    const std::string line =
+        r.member.p ? fmt::format("{} p={}", r.member.class_id, r.member.p) : r.member.class_id;
+    points.push_back({r.n, delta, line, r.proven_optimal, false});
   }
   for (const auto& [n, r] : billiards_best) {
     const double delta = static_cast<double>(oler_delta(n, 1 / r->pattern.packing.d));
