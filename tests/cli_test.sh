@@ -259,6 +259,10 @@ rm -rf "$tmp"
 
 # A random start without growth would run to max_seconds doing nothing: refused in one line.
 expect_error "zero growth scene" "needs growth with a rate > 0" billiards --scene "$DATA/scenes/zero_growth.yaml"
+# Growth without a thermostat never reaches its stop gap (measured: runs end at max_seconds).
+printf 'n: 10\neffects:\n  growth: {rate: 0.01}\n' >"${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
+expect_error "growth without thermostat" "growth needs a thermostat" billiards --scene "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
+rm -f "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

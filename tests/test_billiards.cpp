@@ -318,7 +318,9 @@ effects:
   // A random start without growth stays at diameter 0 forever: refused, not run to max_seconds.
   EXPECT_THROW(parse_scene("n: 5"), std::runtime_error);
   EXPECT_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0}}"), std::runtime_error);
-  EXPECT_NO_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}}"));
+  EXPECT_NO_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}, thermostat: {}}"));
+  // Growth without a thermostat never reaches the stop gap (measured): refused in a YAML scene.
+  EXPECT_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}}"), std::runtime_error);
 }
 
 TEST(Billiards, SceneParsesScheduleShakeAndPattern) {
@@ -328,6 +330,7 @@ effects:
   growth:
     rate: 0.01
     schedule: [{gap: 1e-8, rate: 0.001}, {pressure: 1e3, rate: 0.005}]
+  thermostat: {}
   shake: {per_disk: 300, rattler_factor: 50}
 )");
   ASSERT_TRUE(s.growth && s.shake);
@@ -473,7 +476,8 @@ TEST(Billiards, SceneFromFile) {
   const auto dir = std::filesystem::temp_directory_path() / "tripack_billiards_test";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "pts.txt") << "0.2 0.1\n0.6 0.2\n0.5 0.5\n";
-  std::ofstream(dir / "scene.yaml") << "n: 3\ninitial: pts.txt\neffects: {growth: {}}\n";
+  std::ofstream(dir / "scene.yaml")
+      << "n: 3\ninitial: pts.txt\neffects: {growth: {}, thermostat: {}}\n";
   const Scene s = load_scene((dir / "scene.yaml").string());
   EXPECT_EQ(s.points.size(), 3u);
   EXPECT_GT(s.start_d, 0.3L);
