@@ -198,7 +198,11 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
-std::string html_page(const ExploreResult& result, bool diagrams) {
+bool forces_drawn(const ExplorePacking& r) {
+  return r.source == "builder" && r.certified && r.forces.size() == r.pattern.bonds.size();
+}
+
+std::string html_page(const ExploreResult& result, bool diagrams, bool forces) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
        "<title>tripack explore</title>\n<style>\n"
@@ -285,8 +289,10 @@ std::string html_page(const ExploreResult& result, bool diagrams) {
       const std::string base = "diagrams/" + fs::path(stem).stem().string();
       h << fmt::format(
           "<figure><a href=\"{0}.svg\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
-          "<figcaption>{1} (n = {2}, d = {3})</figcaption></figure>\n",
-          base, html_escape(r.label), r.n, format_significant(r.pattern.packing.d, 15));
+          "<figcaption>{1} (n = {2}, d = {3}){4}</figcaption></figure>\n",
+          base, html_escape(r.label), r.n, format_significant(r.pattern.packing.d, 15),
+          forces && forces_drawn(r) ? fmt::format(" <a href=\"{}-forces.svg\">forces</a>", base)
+                                    : "");
     }
     h << "</div>\n";
   }
@@ -333,6 +339,8 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
       const fs::path base = dir / "diagrams" / fs::path(packing_file_name(r)).stem();
       draw_packing(diagram, base.string() + ".svg");
       draw_packing(diagram, base.string() + ".png", {600, true, false});
+      if (options.forces && forces_drawn(r))
+        draw_packing(diagram, base.string() + "-forces.svg", {900, true, true});
     }
   }
   say("plot: delta.svg, delta.png, delta.pdf");
@@ -344,7 +352,7 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     write_file(dir / "accuracy.csv", accuracy_csv(*result.accuracy));
   }
   say("index.html");
-  write_file(dir / "index.html", html_page(result, options.diagrams));
+  write_file(dir / "index.html", html_page(result, options.diagrams, options.forces));
 }
 
 }  // namespace tripack::report
