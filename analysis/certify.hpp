@@ -42,4 +42,28 @@ struct StressReport {
 StressReport stress_certificate(const Packing& packing, const std::vector<Bond>& bonds,
                                 const std::vector<int>& rattlers);
 
+// Fast path for both certificates (issue 10), linear algebra instead of LPs. With G the
+// bond-opening map over the non-rattlers and A = G^T G:
+//  * a sparse LDL^T of A with positive pivots, and an inverse-iteration estimate of its smallest
+//    eigenvalue above `min_eigenvalue`, say G has full column rank: no motion keeps every bond
+//    at first order (what LP 2 of test_rigidity looks for);
+//  * Newton steps towards the analytic centre of the self-stresses f > 0 (G^T f = 0) give a
+//    balancing stress, scaled so the pair forces sum to 1; it is accepted when every force
+//    exceeds `min_force` and passes stress_certificate's own test (> 1e-12 and > 100 x the long
+//    double balance residual).
+// Then no motion opens a bond either (LP 1): if G d >= 0 then f.(G d) = (G^T f).d = 0 with f > 0,
+// so G d = 0 and d = 0. So an accepted fast certificate is the same verdict as rigid + strictly
+// positive stress. It declines (and the LPs decide) otherwise; its forces are a strictly positive
+// stress, not the max-min one the LP reports.
+struct FastCertificate {
+  bool accepted = false;
+  std::string declined;       // why not, when !accepted
+  double min_eigenvalue = 0;  // estimate of the smallest eigenvalue of G^T G
+  int newton_steps = 0;       // of the stress search
+  StressReport stress;        // filled when the stress step was reached
+};
+FastCertificate fast_certificate(const Packing& packing, const std::vector<Bond>& bonds,
+                                 const std::vector<int>& rattlers, double min_eigenvalue = 1e-8,
+                                 long double min_force = 1e-9L);
+
 }  // namespace tripack

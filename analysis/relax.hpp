@@ -27,6 +27,9 @@ struct RelaxOptions {
 struct RelaxReport {
   bool converged = false;  // the last LP found no gain above `stationary`
   int iterations = 0;
+  // No LP was solved: the start was certified a strict local optimum (pipeline/analyze.cpp), so
+  // the step LP could gain nothing; active/forces are then the bonds and the certificate's stress.
+  bool fast_path = false;
   long double d_start = 0, d_end = 0;
   int lp_columns = 0, lp_rows = 0;  // size of the last LP
   std::vector<Bond> active;         // constraints with positive duals in the last LP, sorted

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
@@ -36,27 +37,105 @@ std::string Analysis::d_string(int digits) const {
   return format_significant(pattern.packing.d, std::min(digits, 18));
 }
 
+namespace {
+
+// Relax leaves rattlers wherever its LPs pushed them (often against their cage): centre them.
+void centre_pattern_rattlers(Pattern& pat) {
+  if (pat.rattlers.empty()) return;
+  Packing& pk = pat.packing;
+  const long double L = 1 / pk.d;
+  std::vector<Vec2L> x;
+  for (const auto& p : pk.points) x.push_back(p * L);
+  centre_rattlers(x, L, pat.rattlers);
+  for (int r : pat.rattlers)
+    pk.points[static_cast<std::size_t>(r)] = x[static_cast<std::size_t>(r)] / L;
+}
+
+// Smallest non-bond gap in units of d (rattlers' play included); +inf if there is none.
+long double smallest_gap(const Pattern& pat) {
+  const auto g = smallest_gaps(pat.packing, pat.bonds, 1);
+  return g.empty() ? std::numeric_limits<long double>::infinity() : g.front().gap;
+}
+
+// Relax fast path (issue 10). If the start, with the contacts it has within 1e-6 d polished
+// shut, is rigid with a strictly positive stress f and every other gap is open, it is a strict
+// local maximum of d and relax has nothing to gain: its step LP maximizes g subject to
+// u_ij.(yi - yj) >= g for the contact pairs (and n.yi >= 0 for the wall contacts, among other
+// rows), and summing those rows with the weights f (G^T f = 0, pair forces summing to 1) gives
+// 0 >= g. So relax would stop after one LP without moving; skipping that LP (212 s at n = 5051,
+// where it is massively degenerate) changes nothing. Returns false, with `a` untouched, when the
+// start does not certify this way: the full pipeline then runs.
+bool certified_start(const Packing& start, Analysis& a) {
+  const auto t0 = Clock::now();
+  Analysis f;
+  f.pattern.packing = start;
+  Packing& pk = f.pattern.packing;
+  if (pk.size() < 2) return false;
+  // Same start as relax: centres projected inside (rounding-level excursions of wall contacts),
+  // d the true minimum distance.
+  for (auto& p : pk.points)
+    for (int pass = 0; pass < 2; ++pass)
+      for (Side s : kSides) {
+        const long double w = wall_distance(p, s, 1.0L);
+        if (w < 0) p = p - wall_normal<long double>(s) * w;
+      }
+  pk.d = min_pair_distance(pk.points, pk.d > 0 ? 1.5L * pk.d : 1);
+  if (!std::isfinite(pk.d) || !(pk.d > 0)) return false;
+  const long double d_start = pk.d;
+  f.identification = timed(f.times.bonds, [&] { return identify_bonds(pk, {}); });
+  if (!f.identification.polish.converged || f.identification.rejected > 0) return false;
+  f.pattern.bonds = f.identification.bonds;
+  f.pattern.rattlers = f.identification.rattlers;
+  centre_pattern_rattlers(f.pattern);
+  // The polished d must be the minimum distance: every non-bond gap clearly open.
+  if (!(smallest_gap(f.pattern) > 1e-9L)) return false;
+  f.fast = timed(f.times.rigidity,
+                 [&] { return fast_certificate(pk, f.pattern.bonds, f.pattern.rattlers); });
+  if (!f.fast.accepted) return false;
+  f.relax.converged = f.relax.fast_path = true;
+  f.relax.d_start = d_start;
+  f.relax.d_end = pk.d;
+  for (std::size_t b = 0; b < f.pattern.bonds.size(); ++b) {
+    f.relax.active.push_back(f.pattern.bonds[b]);
+    f.relax.forces.push_back(f.fast.stress.forces[b]);
+  }
+  f.rigidity.rigid = true;
+  f.stress = f.fast.stress;
+  f.times.relax = seconds_since(t0) - f.times.bonds - f.times.rigidity;
+  a = std::move(f);
+  return true;
+}
+
+}  // namespace
+
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   Analysis a;
-  a.pattern.packing = start;
-  Packing& pk = a.pattern.packing;
-  a.relax = timed(a.times.relax, [&] { return relax_packing(pk); });
-  a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, a.relax.active); });
-  a.pattern.bonds = a.identification.bonds;
-  a.pattern.rattlers = a.identification.rattlers;
-  // Relax leaves rattlers wherever its LPs pushed them (often against their cage): centre them.
-  if (!a.pattern.rattlers.empty()) {
-    const long double L = 1 / pk.d;
-    std::vector<Vec2L> x;
-    for (const auto& p : pk.points) x.push_back(p * L);
-    centre_rattlers(x, L, a.pattern.rattlers);
-    for (int r : a.pattern.rattlers)
-      pk.points[static_cast<std::size_t>(r)] = x[static_cast<std::size_t>(r)] / L;
+  const auto t0 = Clock::now();
+  if (!certified_start(start, a)) {
+    a.pattern.packing = start;
+    Packing& pk = a.pattern.packing;
+    a.relax = relax_packing(pk);
+    a.times.relax = seconds_since(t0);  // a declined fast path counts as relax time
+    a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, a.relax.active); });
+    a.pattern.bonds = a.identification.bonds;
+    a.pattern.rattlers = a.identification.rattlers;
+    centre_pattern_rattlers(a.pattern);
+    const Pattern& p = a.pattern;
+    a.fast =
+        timed(a.times.rigidity, [&] { return fast_certificate(p.packing, p.bonds, p.rattlers); });
+    if (a.fast.accepted) {
+      a.rigidity.rigid = true;
+      a.stress = a.fast.stress;
+    } else {
+      const double fast_seconds = a.times.rigidity;
+      a.rigidity =
+          timed(a.times.rigidity, [&] { return test_rigidity(p.packing, p.bonds, p.rattlers); });
+      a.times.rigidity += fast_seconds;
+      a.stress =
+          timed(a.times.stress, [&] { return stress_certificate(p.packing, p.bonds, p.rattlers); });
+    }
   }
-  a.rigidity = timed(a.times.rigidity,
-                     [&] { return test_rigidity(pk, a.pattern.bonds, a.pattern.rattlers); });
-  a.stress = timed(a.times.stress,
-                   [&] { return stress_certificate(pk, a.pattern.bonds, a.pattern.rattlers); });
+  Packing& pk = a.pattern.packing;
   a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
   if (options.digits > 18)
     a.multiprecision = timed(a.times.multiprecision, [&] {

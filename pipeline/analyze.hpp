@@ -34,6 +34,7 @@ struct Analysis {
   BondIdentification identification;
   RigidityReport rigidity;
   StressReport stress;
+  FastCertificate fast;  // the LP-free certificate of the final state (the LPs ran if declined)
   std::optional<MultiprecisionPolish> multiprecision;
   std::vector<Gap> gaps;  // the 64 smallest non-bond gaps (near contacts and rattlers' play)
   StageTimes times;

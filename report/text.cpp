@@ -51,14 +51,19 @@ void near_contacts(std::ostream& out, const Analysis& a) {
 
 void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
   line(out, "analysis",
-       fmt::format("relax: {} LP steps, {}; polish residual {:.2g}, {} candidates, {} rejected",
-                   a.relax.iterations,
-                   a.relax.converged ? "stationary" : "stopped at the trust floor",
-                   static_cast<double>(a.identification.polish.max_residual),
-                   a.identification.candidates, a.identification.rejected));
+       fmt::format(
+           "relax: {}; polish residual {:.2g}, {} candidates, {} rejected",
+           a.relax.fast_path
+               ? "no LP (the start certified as a strict local optimum)"
+               : fmt::format("{} LP steps, {}", a.relax.iterations,
+                             a.relax.converged ? "stationary" : "stopped at the trust floor"),
+           static_cast<double>(a.identification.polish.max_residual), a.identification.candidates,
+           a.identification.rejected));
   line(out, "rigidity",
        a.rigidity.rigid
-           ? "jammed (no first-order motion of the non-rattlers)"
+           ? fmt::format("jammed (no first-order motion of the non-rattlers); {}",
+                         a.fast.accepted ? "LP-free certificate"
+                                         : "LPs (fast path declined: " + a.fast.declined + ")")
            : fmt::format("NOT rigid: motion of {} disks opens {} bonds (LP {:.3g}, {:.3g})",
                          a.rigidity.moving_disks, a.rigidity.opening_bonds, a.rigidity.opening,
                          a.rigidity.floppy));

@@ -1,13 +1,14 @@
 // analysis/bonds and analysis/certify: rattlers, rigidity LP, stress certificate, hard cases.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
-#include "polish/polish.hpp"
 #include "constructors/builders.hpp"
+#include "polish/polish.hpp"
 
 namespace tripack {
 namespace {
@@ -148,6 +149,57 @@ TEST(HardCases, SparseRowsNearDegenerateContactsPolishAndReportTheirGaps) {
     }
     EXPECT_NEAR(raised, expected[k - 8], 0.05L * expected[k - 8]) << k;
   }
+}
+
+TEST(FastCertificate, AcceptsBuiltRipplesWithAStrictlyPositiveBalancedStress) {
+  for (long p : {3L, 22L}) {
+    const Pattern pat = build_chain_family({p, 1, 1});
+    const FastCertificate c = fast_certificate(pat.packing, pat.bonds, pat.rattlers);
+    ASSERT_TRUE(c.accepted) << c.declined;
+    EXPECT_GT(c.min_eigenvalue, 1e-4);
+    EXPECT_TRUE(c.stress.strictly_positive);
+    EXPECT_LT(c.stress.residual, 1e-15L);
+    long double pair_sum = 0;
+    for (std::size_t b = 0; b < pat.bonds.size(); ++b) {
+      EXPECT_GT(c.stress.forces[b], 0);
+      if (!pat.bonds[b].is_wall()) pair_sum += c.stress.forces[b];
+    }
+    EXPECT_NEAR(pair_sum, 1, 1e-12L);
+    // The LPs agree.
+    EXPECT_TRUE(test_rigidity(pat.packing, pat.bonds, pat.rattlers).rigid);
+    EXPECT_TRUE(stress_certificate(pat.packing, pat.bonds, pat.rattlers).strictly_positive);
+  }
+}
+
+TEST(FastCertificate, DeclinesAPlantedFloppyDisk) {
+  // t22a with every bond of one held disk but one removed: it slides along that contact.
+  const Pattern pat = build_chain_family({3, 1, 1});
+  int disk = 0;
+  while (std::binary_search(pat.rattlers.begin(), pat.rattlers.end(), disk)) ++disk;
+  std::vector<Bond> bonds;
+  bool kept = false;
+  for (const auto& b : pat.bonds) {
+    const bool touches = b.a == disk || (!b.is_wall() && b.b == disk);
+    if (touches && kept) continue;
+    kept = kept || touches;
+    bonds.push_back(b);
+  }
+  const FastCertificate c = fast_certificate(pat.packing, bonds, pat.rattlers);
+  EXPECT_FALSE(c.accepted);
+  EXPECT_FALSE(c.declined.empty());
+  EXPECT_FALSE(test_rigidity(pat.packing, bonds, pat.rattlers).rigid);  // the LP agrees
+}
+
+TEST(FastCertificate, DeclinesWithoutAStrictlyPositiveStress) {
+  // The floor pair: sliding along the floor keeps every bond (G^T G is singular) and no stress
+  // balances the pair's push.
+  Packing pk;
+  pk.points = {{0.4L, 0}, {0.6L, 0}};
+  pk.d = 0.2L;
+  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
+                                Bond::wall(1, Side::Bottom)};
+  const FastCertificate c = fast_certificate(pk, bonds, {});
+  EXPECT_FALSE(c.accepted);
 }
 
 }  // namespace

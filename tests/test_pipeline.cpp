@@ -52,6 +52,38 @@ TEST(Pipeline, AnalyzeOfBuildFindsTheBuildersBondsAndCertifiesEveryClass) {
   EXPECT_GT(cases, 90);
 }
 
+TEST(Pipeline, ABuiltOptimumSkipsTheRelaxLPAndAMissingContactDoesNot) {
+  // Issue 10: the built state certifies without LPs (relax's fast path) ...
+  const Pattern built = build_pattern(catalogue(), {"even-ripple", 3, 0, ""});
+  const Analysis fast = analyze_packing(built.packing, {});
+  EXPECT_TRUE(fast.relax.fast_path);
+  EXPECT_EQ(fast.relax.iterations, 0);
+  EXPECT_TRUE(fast.fast.accepted);
+  EXPECT_TRUE(fast.certified()) << fast.status();
+  EXPECT_EQ(fast.pattern.bonds, built.bonds);
+  // ... but with one held disk pushed 1e-3 d off a contact (that contact missing, others
+  // overlapping) it is no optimum: the fast path declines and relax's LPs recover the packing.
+  Packing moved = built.packing;
+  // (a disk off the walls: relax would project a wall overlap away before measuring d)
+  std::vector<char> walled(built.packing.size(), 0);
+  for (const auto& b : built.bonds)
+    if (b.is_wall()) walled[static_cast<std::size_t>(b.a)] = 1;
+  const Bond contact = *std::find_if(built.bonds.begin(), built.bonds.end(), [&](const Bond& b) {
+    return !b.is_wall() && !walled[static_cast<std::size_t>(b.a)] &&
+           !std::binary_search(built.rattlers.begin(), built.rattlers.end(), b.a);
+  });
+  auto& p = moved.points[static_cast<std::size_t>(contact.a)];
+  const Vec2L away = p - moved.points[static_cast<std::size_t>(contact.b)];
+  p = p + away / norm(away) * (1e-3L * moved.d);
+  const Analysis slow = analyze_packing(moved, {});
+  EXPECT_FALSE(slow.relax.fast_path);
+  EXPECT_GE(slow.relax.iterations, 1);
+  EXPECT_LT(slow.relax.d_start, built.packing.d * (1 - 1e-5L));  // the start was no optimum
+  EXPECT_TRUE(slow.certified()) << slow.status();
+  EXPECT_EQ(slow.pattern.bonds, built.bonds);
+  EXPECT_LT(std::fabs(slow.pattern.packing.d / built.packing.d - 1), 1e-14L);
+}
+
 TEST(Pipeline, MultiprecisionDigits) {
   // CONSTRUCTIONS: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) =
   // 0.17939690861186597956121884705073659574141764618876... (50 digits, mpmath).
