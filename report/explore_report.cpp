@@ -198,8 +198,19 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
+// Report size: Cairo's SVG of a diagram grows ~1.5 kB a disk (a forces SVG ~8 kB a disk: 6.9 MB
+// at n = 820), so forces diagrams are PNGs for builder packings up to n = 100, and rows beyond
+// the explored max n (the large terms) get a PNG only. Measured on the default explore: 377 MB
+// of diagrams before these limits.
+constexpr long long kForcesMaxN = 100;
+
 bool forces_drawn(const ExplorePacking& r) {
-  return r.source == "builder" && r.certified && r.forces.size() == r.pattern.bonds.size();
+  return r.source == "builder" && r.certified && r.n <= kForcesMaxN &&
+         r.forces.size() == r.pattern.bonds.size();
+}
+
+bool svg_drawn(const ExplorePacking& r, const ExploreSettings& settings) {
+  return r.n <= settings.max_n;
 }
 
 std::string html_page(const ExploreResult& result, bool diagrams, bool forces) {
@@ -288,11 +299,12 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces) {
       const std::string stem = packing_file_name(r);
       const std::string base = "diagrams/" + fs::path(stem).stem().string();
       h << fmt::format(
-          "<figure><a href=\"{0}.svg\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
+          "<figure><a href=\"{0}.{5}\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
           "<figcaption>{1} (n = {2}, d = {3}){4}</figcaption></figure>\n",
           base, html_escape(r.label), r.n, format_significant(r.pattern.packing.d, 15),
-          forces && forces_drawn(r) ? fmt::format(" <a href=\"{}-forces.svg\">forces</a>", base)
-                                    : "");
+          forces && forces_drawn(r) ? fmt::format(" <a href=\"{}-forces.png\">forces</a>", base)
+                                    : "",
+          svg_drawn(r, result.settings) ? "svg" : "png");
     }
     h << "</div>\n";
   }
@@ -337,10 +349,10 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     for (const auto& r : result.packings) {
       Diagram diagram{r.pattern, r.label, format_significant(r.pattern.packing.d, 15), r.forces};
       const fs::path base = dir / "diagrams" / fs::path(packing_file_name(r)).stem();
-      draw_packing(diagram, base.string() + ".svg");
-      draw_packing(diagram, base.string() + ".png", {600, true, false});
+      if (svg_drawn(r, result.settings)) draw_packing(diagram, base.string() + ".svg");
+      draw_packing(diagram, base.string() + ".png", {440, true, false});  // 2x the page's 220 px
       if (options.forces && forces_drawn(r))
-        draw_packing(diagram, base.string() + "-forces.svg", {900, true, true});
+        draw_packing(diagram, base.string() + "-forces.png", {900, true, true});
     }
   }
   say("plot: delta.svg, delta.png, delta.pdf");

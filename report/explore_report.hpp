@@ -13,7 +13,7 @@
 namespace tripack::report {
 
 struct ExploreReportOptions {
-  bool diagrams = true;  // one SVG + PNG per packing
+  bool diagrams = true;  // SVG + PNG per packing (PNG only for the large terms beyond max n)
   bool forces = true;    // also a forces diagram of each certified builder packing
 };
 
