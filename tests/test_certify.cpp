@@ -80,12 +80,21 @@ TEST(Rigidity, EveryBuiltFamilyIsJammed) {
   }
 }
 
+// Two touching disks on the floor: sliding along it keeps every bond.
+struct FloorPair {
+  Packing packing;
+  std::vector<Bond> bonds;
+};
+FloorPair floor_pair() {
+  FloorPair f;
+  f.packing.points = {{0.4L, 0}, {0.6L, 0}};
+  f.packing.d = 0.2L;
+  f.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
+  return f;
+}
+
 TEST(Rigidity, AFloorPairIsNotRigidAndTheMotionIsReported) {
-  Packing pk;
-  pk.points = {{0.4L, 0}, {0.6L, 0}};
-  pk.d = 0.2L;
-  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
-                                Bond::wall(1, Side::Bottom)};
+  const auto [pk, bonds] = floor_pair();
   const RigidityReport r = test_rigidity(pk, bonds, {});
   EXPECT_FALSE(r.rigid);
   EXPECT_GT(r.opening, 0.5);  // a unit-box motion opens bonds at O(1) rates
@@ -193,11 +202,7 @@ TEST(FastCertificate, DeclinesAPlantedFloppyDisk) {
 TEST(FastCertificate, DeclinesWithoutAStrictlyPositiveStress) {
   // The floor pair: sliding along the floor keeps every bond (G^T G is singular) and no stress
   // balances the pair's push.
-  Packing pk;
-  pk.points = {{0.4L, 0}, {0.6L, 0}};
-  pk.d = 0.2L;
-  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
-                                Bond::wall(1, Side::Bottom)};
+  const auto [pk, bonds] = floor_pair();
   const FastCertificate c = fast_certificate(pk, bonds, {});
   EXPECT_FALSE(c.accepted);
 }
