@@ -7,11 +7,13 @@
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
+#include "analysis/relax.hpp"
+#include "constructors/builders.hpp"
+#include "pipeline/analyze.hpp"
 #include "polish/polish.hpp"
 #include "polish/polish_mp.hpp"
-#include "analysis/relax.hpp"
-#include "pipeline/analyze.hpp"
-#include "constructors/builders.hpp"
+#include "sim/billiards.hpp"
+#include "sim/scene.hpp"
 
 namespace tripack {
 namespace {
@@ -95,6 +97,45 @@ void BM_CertifyPipeline(benchmark::State& s) {  // relax + bonds + polish + rigi
   }
   set_n(s, pat.packing.size());
 }
+
+// Issue 10: the whole analysis from the built state (the fast certificate's case), at n = 991,
+// 5051, 10154 and 100577 (Delta(2p)+1 for p = 22, 50, 71, 224).
+void BM_CertifyBuilt(benchmark::State& s) {
+  const Pattern pat = ripple(s.range(0));
+  for (auto _ : s) {
+    const pipeline::Analysis a = pipeline::analyze_packing(pat.packing, {});
+    if (!a.certified()) s.SkipWithError("not certified");
+    s.counters["relax_s"] = a.times.relax;
+    s.counters["bonds_s"] = a.times.bonds;
+    s.counters["certify_s"] = a.times.rigidity + a.times.stress;
+  }
+  set_n(s, pat.packing.size());
+}
+BENCHMARK(BM_CertifyBuilt)
+    ->Arg(22)
+    ->Arg(50)
+    ->Arg(71)
+    ->Arg(224)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// Issue 10: a billiards end state (default scene, seed 1): near contacts everywhere, rattlers,
+// an imperfect jam; the fast path rarely applies and the LPs decide.
+void BM_AnalyzeBilliardsEndState(benchmark::State& s) {
+  const int n = static_cast<int>(s.range(0));
+  std::mt19937_64 rng(1);
+  const BilliardsResult end = run_billiards(default_scene(n), rng);
+  for (auto _ : s) {
+    const pipeline::Analysis a = pipeline::analyze_packing(end.packing, {});
+    s.counters["certified"] = a.certified();
+    s.counters["relax_s"] = a.times.relax;
+    s.counters["bonds_s"] = a.times.bonds;
+    s.counters["certify_s"] = a.times.rigidity + a.times.stress;
+  }
+  s.counters["billiards_s"] = end.seconds;
+  set_n(s, static_cast<std::size_t>(n));
+}
+BENCHMARK(BM_AnalyzeBilliardsEndState)->Arg(1000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 #define TRIPACK_SIZES ->Arg(3)->Arg(6)->Arg(11)->Arg(22)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_Relax) TRIPACK_SIZES;
