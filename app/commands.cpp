@@ -106,18 +106,24 @@ pipeline::BilliardsSearch search_from(const GlobalOptions& g, const BilliardsCom
   return search;
 }
 
+// The directory, created if needed; checked before any work so a long run cannot end in an
+// unwritable place.
+std::filesystem::path writable_directory(const std::string& name) {
+  const std::filesystem::path dir(name);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir) || access(dir.c_str(), W_OK) != 0)
+    throw std::runtime_error("cannot write to directory '" + name + "'");
+  return dir;
+}
+
 // -o DIR is checked before the runs (a search must not end in an unwritable directory).
 std::filesystem::path prepare_output_dir(const BilliardsCommandOptions& o) {
   if (o.file_format != "txt" && o.file_format != "csv" && o.file_format != "json" &&
       o.file_format != "pck")
     throw std::invalid_argument("--format must be txt, csv, json or pck, not '" + o.file_format +
                                 "'");
-  std::filesystem::path dir(o.output_dir);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir) || access(dir.c_str(), W_OK) != 0)
-    throw std::runtime_error("cannot write to directory '" + o.output_dir + "'");
-  return dir;
+  return writable_directory(o.output_dir);
 }
 
 void write_distinct_packings(const pipeline::BilliardsSearchResult& result,
@@ -290,11 +296,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   settings.seed = o.seed;
   settings.accuracy = o.accuracy;
   report::find_gnuplot();  // before any work: a missing gnuplot is one line, not a lost hour
-  const std::filesystem::path dir(o.out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || access(dir.c_str(), W_OK) != 0)
-    throw std::runtime_error("cannot write to directory '" + o.out + "'");
+  const std::filesystem::path dir = writable_directory(o.out);
   const double estimate = pipeline::estimated_explore_seconds(catalogue, settings);
   if (estimate > 300)
     std::cerr << fmt::format(

@@ -188,6 +188,23 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
   return gaps;
 }
 
+// A class member built and certified; when the certificate's LP fails (near-degenerate members,
+// README "Known limits") the polished build is kept, marked not certified, with the reason.
+ExplorePacking build_row(const Catalogue& catalogue, const BuildRequest& request) {
+  const auto start = Clock::now();
+  try {
+    return packing_of_build(build_and_certify(catalogue, request, BuildSettings{}),
+                            seconds_since(start));
+  } catch (const std::exception& certify_error) {
+    BuildSettings polish_only;
+    polish_only.certify = false;
+    ExplorePacking row =
+        packing_of_build(build_and_certify(catalogue, request, polish_only), seconds_since(start));
+    row.verdict = std::string("not certified: ") + certify_error.what();
+    return row;
+  }
+}
+
 }  // namespace
 
 std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n) {
@@ -229,28 +246,12 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   for (const auto& request : plan.builds) {
     if (cancel) break;
     const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
-    report("build",
-           fmt::format("{} (n = {})",
-                       member_name({request.class_id, request.k, request.p, request.variant}), n));
-    const auto t0 = Clock::now();
+    const std::string name = member_name({request.class_id, request.k, request.p, request.variant});
+    report("build", fmt::format("{} (n = {})", name, n));
     try {
-      try {
-        const BuildResult b = build_and_certify(catalogue, request, BuildSettings{});
-        result.packings.push_back(packing_of_build(b, seconds_since(t0)));
-      } catch (const std::exception& certify_error) {
-        // Near-degenerate members (README "Known limits") can defeat the certificate's LP: keep
-        // the polished build, marked as not certified, with the reason.
-        BuildSettings polish_only;
-        polish_only.certify = false;
-        const BuildResult b = build_and_certify(catalogue, request, polish_only);
-        ExplorePacking row = packing_of_build(b, seconds_since(t0));
-        row.verdict = std::string("not certified: ") + certify_error.what();
-        result.packings.push_back(std::move(row));
-      }
+      result.packings.push_back(build_row(catalogue, request));
     } catch (const std::exception& e) {
-      result.errors.push_back(fmt::format(
-          "build {}: {}", member_name({request.class_id, request.k, request.p, request.variant}),
-          e.what()));
+      result.errors.push_back(fmt::format("build {}: {}", name, e.what()));
     }
     done += build_cost(n);
   }

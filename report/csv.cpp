@@ -6,6 +6,7 @@
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "report/fields.hpp"
 #include "report/render.hpp"
 
 namespace tripack::report {
@@ -14,24 +15,17 @@ using namespace pipeline;
 
 namespace {
 
-std::string quoted(const std::string& field) {
-  if (field.find_first_of(",\"\n") == std::string::npos) return field;
-  std::string q = "\"";
-  for (char c : field) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
 void row(std::ostream& out, std::initializer_list<std::string> fields) {
   bool first = true;
   for (const auto& f : fields) {
-    out << (first ? "" : ",") << quoted(f);
+    out << (first ? "" : ",") << csv_field(f);
     first = false;
   }
   out << "\n";
 }
 
 std::string num(long double v) {
-  return format_significant(v, 17);
+  return decimal17(v);
 }
 std::string num(double v) {
   return format_significant(v, 6);

@@ -12,6 +12,7 @@
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "report/diagram.hpp"
+#include "report/fields.hpp"
 #include "report/plot.hpp"
 
 namespace tripack::report {
@@ -20,25 +21,6 @@ namespace fs = std::filesystem;
 using namespace pipeline;
 
 namespace {
-
-std::string digits17(long double v) {
-  return format_significant(v, 17);
-}
-
-// A file written whole or an error naming it.
-void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-  out << text;
-  if (!out) throw std::runtime_error("failed writing '" + path.string() + "'");
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 
 std::string class_of(const ExplorePacking& r) {
   return r.member.class_id;
@@ -53,7 +35,7 @@ std::string packings_csv(const ExploreResult& result) {
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n, r.rank, csv_field(r.label),
         class_of(r), r.member.p ? std::to_string(r.member.p) : "",
         r.member.class_id.empty() ? "" : std::to_string(r.member.k), csv_field(r.member.variant),
-        digits17(d), digits17(1 / d), digits17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
+        decimal17(d), decimal17(1 / d), decimal17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
         r.pattern.rattlers.size(), r.certified ? "true" : "false", r.source, r.seconds,
         packing_file_name(r));
   }
@@ -74,9 +56,9 @@ std::string packings_json(const ExploreResult& result) {
          {"k", r.member.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.k)},
          {"variant",
           r.member.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.variant)},
-         {"d", digits17(d)},
-         {"L", digits17(1 / d)},
-         {"delta", digits17(oler_delta(r.n, 1 / d))},
+         {"d", decimal17(d)},
+         {"L", decimal17(1 / d)},
+         {"delta", decimal17(oler_delta(r.n, 1 / d))},
          {"bonds", r.pattern.bonds.size()},
          {"rattlers", r.pattern.rattlers.size()},
          {"rattler_indices", r.pattern.rattlers},
@@ -102,7 +84,7 @@ std::string compare_csv(const ExploreResult& result) {
          "symmetry,reason\n";
   for (const auto& c : result.comparisons)
     out << fmt::format("{},{},{},{},{},{:.3g},{},{},{},{},{},{},{},{}\n", c.n, csv_field(c.builder),
-                       c.billiards_label, digits17(c.d_builder), digits17(c.d_billiards),
+                       c.billiards_label, decimal17(c.d_builder), decimal17(c.d_billiards),
                        static_cast<double>(c.d_relative_difference), c.bonds_builder,
                        c.bonds_billiards, c.rattlers_builder, c.rattlers_billiards,
                        c.same_contact_graph, c.same_packing, c.symmetry, csv_field(c.reason));
@@ -114,7 +96,7 @@ std::string classes_csv(const ExploreResult& result) {
   out << "class,p,k,n,L_n,L_n_plus_1,difference,n_plus_1_from,paper_tight\n";
   for (const auto& g : result.class_gaps)
     out << fmt::format("{},{},{},{},{},{},{},{},{}\n", g.class_id, g.p ? std::to_string(g.p) : "",
-                       g.k, g.n, digits17(g.L_n), digits17(g.L_next), digits17(g.L_next - g.L_n),
+                       g.k, g.n, decimal17(g.L_n), decimal17(g.L_next), decimal17(g.L_next - g.L_n),
                        csv_field(g.next_source), csv_field(g.claim_tight));
   return out.str();
 }

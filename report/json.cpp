@@ -4,6 +4,7 @@
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "report/fields.hpp"
 #include "report/render.hpp"
 
 namespace tripack::report {
@@ -17,10 +18,6 @@ namespace {
 // discard computed results.
 void emit(std::ostream& out, const json& j) {
   out << j.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
-}
-
-std::string digits17(long double v) {
-  return format_significant(v, 17);
 }
 
 json optional_string(const std::string& s) {
@@ -73,8 +70,8 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
   const long double L = 1.0L / pk.d;
   json j = member_json(b.pattern.provenance);
   j["n"] = n;
-  j["d"] = b.digits > 18 ? b.d_string(b.digits) : digits17(pk.d);
-  j["L"] = digits17(L);
+  j["d"] = b.digits > 18 ? b.d_string(b.digits) : decimal17(pk.d);
+  j["L"] = decimal17(L);
   j["delta"] = static_cast<double>(oler_delta(n, L));
   add_counts(j, b.pattern);
   j["bonds_expected"] = b.bonds_expected ? json(*b.bonds_expected) : json(nullptr);
@@ -100,7 +97,7 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
 
 json analysis_json(const Analysis& a) {
   json j;
-  j["d"] = digits17(a.pattern.packing.d);
+  j["d"] = decimal17(a.pattern.packing.d);
   add_counts(j, a.pattern);
   j["certificate"] = certificate_json(a);
   return j;
@@ -117,7 +114,7 @@ json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
            {"events", run.sim.events},
            {"collisions", run.sim.collisions},
            {"seconds", run.sim.seconds},
-           {"d_billiards", digits17(run.sim.packing.d)},
+           {"d_billiards", decimal17(run.sim.packing.d)},
            {"stop", run.sim.stop_reason},
            {"label", run.label}};
     if (run.analysis) x.update(analysis_json(*run.analysis));
@@ -133,8 +130,8 @@ json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
     const auto& x = r.packings[i];
     json p{{"rank", i + 1},
            {"label", x.label},
-           {"d", digits17(x.pattern.packing.d)},
-           {"L", digits17(1 / x.pattern.packing.d)},
+           {"d", decimal17(x.pattern.packing.d)},
+           {"L", decimal17(1 / x.pattern.packing.d)},
            {"delta", static_cast<double>(oler_delta(r.scene.n, 1 / x.pattern.packing.d))},
            {"certified", x.certified},
            {"verdict", x.verdict},
@@ -190,7 +187,7 @@ void render_json(std::ostream& out, const BestBuild& b, const RenderOptions& o) 
     j["candidates"] = json::array();
     for (const auto& c : b.candidates) {
       json x = member_json(c.member);
-      x["d"] = digits17(c.d);
+      x["d"] = decimal17(c.d);
       j["candidates"].push_back(x);
     }
   }
@@ -206,8 +203,8 @@ void render_json(std::ostream& out, const FormulaCheck& c, const RenderOptions&)
          {"p", r.p ? json(r.p) : json(nullptr)},
          {"variant", optional_string(r.variant)},
          {"n", r.n},
-         {"d_built", digits17(r.d_built)},
-         {"d_formula", r.d_formula ? json(digits17(*r.d_formula)) : json(nullptr)},
+         {"d_built", decimal17(r.d_built)},
+         {"d_formula", r.d_formula ? json(decimal17(*r.d_formula)) : json(nullptr)},
          {"relative_difference",
           r.d_formula ? json(static_cast<double>(r.relative_difference)) : json(nullptr)},
          {"bonds", r.bonds},
@@ -223,8 +220,8 @@ void render_json(std::ostream& out, const CatalogueTable& t, const RenderOptions
   for (const auto& r : t.rows) {
     json x = member_json(r.member);
     x.update({{"n", r.n},
-              {"d", digits17(r.d)},
-              {"L", digits17(1 / r.d)},
+              {"d", decimal17(r.d)},
+              {"L", decimal17(1 / r.d)},
               {"delta", static_cast<double>(oler_delta(r.n, 1 / r.d))},
               {"bonds", r.bonds},
               {"rattlers", r.rattlers},
@@ -255,7 +252,7 @@ void render_json(std::ostream& out, const FileAnalysis& f, const RenderOptions& 
   j["value_in_convention"] = f.value_string(digits);
   if (f.convention == Convention::Radius) j["r"] = f.value_string(digits);
   if (f.convention == Convention::UnitDiskSide) j["S"] = f.value_string(digits);
-  j["d_start"] = digits17(a.relax.d_start);
+  j["d_start"] = decimal17(a.relax.d_start);
   add_counts(j, a.pattern);
   j["certificate"] = certificate_json(a);
   j["warnings"] = f.warnings;

@@ -20,6 +20,8 @@
 #include <string_view>
 #include <tuple>
 
+#include "report/fields.hpp"
+
 namespace tripack::report {
 namespace fs = std::filesystem;
 
@@ -65,26 +67,6 @@ std::string gp_string(std::string_view s) {
       out += c;
   }
   return out + "'";
-}
-
-// A CSV field (RFC 4180 quoting only where needed, so plain names stay plain).
-std::string csv_field(std::string_view s) {
-  if (s.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(s);
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-void write_file(const fs::path& path, const std::string& bytes) {
-  errno = 0;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << bytes;
-  out.close();
-  if (!out) {
-    const int why = errno;
-    throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(),
-                                         why ? std::strerror(why) : "write failed"));
-  }
 }
 
 std::string read_file(const fs::path& path) {
