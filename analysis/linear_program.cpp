@@ -62,6 +62,7 @@ LinearProgram::Solution LinearProgram::solve(bool maximize) const {
   // pairs at k = 8) are ~1e-8 and must be resolved.
   model.setPrimalTolerance(1e-10);
   model.setDualTolerance(1e-10);
+  if (!scaling_) model.scaling(0);
   // These LPs are highly degenerate (many contacts active at once); CLP's dual simplex handles
   // them, with the primal simplex as a second opinion.
   model.dual();

@@ -50,6 +50,7 @@ RelaxReport relax_packing(Packing& pk, const RelaxOptions& opt) {
     // fixed tolerances (~1e-7) are relative to the step: the accuracy improves as the box shrinks.
     const long double reach = 3 * box + 1e-9L * d;  // a pair can close by at most 2 sqrt2 box
     LinearProgram lp;
+    lp.set_scaling(false);
     for (std::size_t i = 0; i < n; ++i) {
       lp.add_column(-1, 1, 0);
       lp.add_column(-1, 1, 0);

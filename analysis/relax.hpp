@@ -30,6 +30,10 @@ struct RelaxReport {
   // No LP was solved: the start was certified a strict local optimum (pipeline/analyze.cpp), so
   // the step LP could gain nothing; active/forces are then the bonds and the certificate's stress.
   bool fast_path = false;
+  // No LP either: the interior-point relax (analysis/interior_relax.hpp) moved the start to a
+  // state that certified this way (pipeline/analyze.cpp).
+  bool interior = false;
+  int newton_steps = 0;  // of the interior-point relax, when it ran
   long double d_start = 0, d_end = 0;
   int lp_columns = 0, lp_rows = 0;  // size of the last LP
   std::vector<Bond> active;         // constraints with positive duals in the last LP, sorted

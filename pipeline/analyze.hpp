@@ -9,6 +9,7 @@
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
+#include "analysis/interior_relax.hpp"
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
 #include "core/packing.hpp"
@@ -26,6 +27,11 @@ struct StageTimes {
 
 struct AnalysisOptions {
   int digits = 15;  // > 18: polish in MPFR to this many digits
+  // From this many disks, a start that does not certify as it is is first moved by the
+  // interior-point relax; the LP relax runs (from the start) only if that result does not
+  // certify either. Below it the LP relax is fast (n = 254: 0.1 s) and decides alone.
+  std::size_t interior_from = 500;
+  InteriorRelaxOptions interior;
 };
 
 struct Analysis {
@@ -35,6 +41,9 @@ struct Analysis {
   RigidityReport rigidity;
   StressReport stress;
   FastCertificate fast;  // the LP-free certificate of the final state (the LPs ran if declined)
+  // The interior-point relax, when it ran (n >= interior_from and the start did not certify).
+  // If its result did not certify, the LP relax decided and this keeps what it reached.
+  std::optional<InteriorRelaxReport> interior;
   std::optional<MultiprecisionPolish> multiprecision;
   std::vector<Gap> gaps;  // the 64 smallest non-bond gaps (near contacts and rattlers' play)
   StageTimes times;

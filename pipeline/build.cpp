@@ -45,7 +45,9 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
       settings.certify && settings.polish && b.pattern.packing.size() <= kCertifyLimit;
   b.certify_skipped = settings.certify && !certify;
   if (certify) {
-    b.analysis = analyze_packing(b.pattern.packing, {settings.digits});
+    AnalysisOptions options;
+    options.digits = settings.digits;
+    b.analysis = analyze_packing(b.pattern.packing, options);
   } else if (settings.digits > 18) {
     b.multiprecision = timed(b.times.multiprecision, [&] {
       return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,

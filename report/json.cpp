@@ -46,7 +46,11 @@ json certificate_json(const Analysis& a) {
           {"balance_residual", static_cast<double>(a.stress.residual)},
           {"certified", a.certified()},
           {"verdict", a.status()},
-          {"relax_iterations", a.relax.iterations}};
+          {"relax_iterations", a.relax.iterations},
+          {"relax_method", a.relax.interior    ? "interior point"
+                           : a.relax.fast_path ? "start certified"
+                                               : "linear programs"},
+          {"interior_d", a.interior ? json(decimal17(a.interior->d_end)) : json(nullptr)}};
 }
 
 json analysis_stage_seconds(const Analysis& a) {

@@ -53,12 +53,21 @@ void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
   line(out, "analysis",
        fmt::format(
            "relax: {}; polish residual {:.2g}, {} candidates, {} rejected",
-           a.relax.fast_path
+           a.relax.interior
+               ? fmt::format("interior point, {} Newton steps, no LP (its result certified)",
+                             a.relax.newton_steps)
+           : a.relax.fast_path
                ? "no LP (the start certified as a strict local optimum)"
                : fmt::format("{} LP steps, {}", a.relax.iterations,
                              a.relax.converged ? "stationary" : "stopped at the trust floor"),
            static_cast<double>(a.identification.polish.max_residual), a.identification.candidates,
            a.identification.rejected));
+  if (a.interior && !a.relax.interior)
+    line(out, "interior",
+         fmt::format("the interior-point relax reached d = {:.17Lg} ({} Newton steps{}), which did "
+                     "not certify; the LP relax decided",
+                     a.interior->d_end, a.interior->newton_steps,
+                     a.interior->converged ? "" : ", not converged"));
   line(out, "rigidity",
        a.rigidity.rigid
            ? fmt::format("jammed (no first-order motion of the non-rattlers); {}",

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <vector>
 
 #include "analysis/compare.hpp"
+#include "analysis/interior_relax.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/io.hpp"
@@ -84,11 +86,73 @@ TEST(Pipeline, ABuiltOptimumSkipsTheRelaxLPAndAMissingContactDoesNot) {
   EXPECT_LT(std::fabs(slow.pattern.packing.d / built.packing.d - 1), 1e-14L);
 }
 
+// Every coordinate of `pk` moved by up to `amplitude` d (seeded uniform).
+Packing perturbed(const Packing& pk, long double amplitude, std::uint64_t seed) {
+  Packing out = pk;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<long double> u(-amplitude, amplitude);
+  for (auto& x : out.points) x = {x.x + u(rng) * pk.d, x.y + u(rng) * pk.d};
+  return out;
+}
+
+TEST(Pipeline, InteriorRelaxRecoversAPerturbedPatternWithoutLPs) {
+  // Issue 10: even-ripple k = 10 (n = 211) with every coordinate moved by up to 1e-5 d is no
+  // optimum; the interior-point relax brings it back to the built packing, which then certifies
+  // without any LP: same bonds, d equal to the builder's (its closed form) to 1e-14.
+  const Pattern built = build_pattern(catalogue(), {"even-ripple", 10, 0, ""});
+  const Packing start = perturbed(built.packing, 1e-5L, 7);
+  AnalysisOptions interior;
+  interior.interior_from = 0;
+  const Analysis a = analyze_packing(start, interior);
+  ASSERT_TRUE(a.interior.has_value());
+  EXPECT_TRUE(a.interior->converged);
+  EXPECT_TRUE(a.relax.interior);
+  EXPECT_EQ(a.relax.iterations, 0);  // no LP step
+  EXPECT_TRUE(a.certified()) << a.status();
+  EXPECT_EQ(a.pattern.bonds, built.bonds);
+  EXPECT_EQ(a.pattern.rattlers, built.rattlers);
+  EXPECT_LT(std::fabs(a.pattern.packing.d / built.packing.d - 1), 1e-14L);
+  EXPECT_LT(a.relax.d_start, built.packing.d * (1 - 1e-6L));  // the start was no optimum
+  // Below interior_from (500 by default) the LP relax decides: the same packing and verdict.
+  const Analysis lp = analyze_packing(start, {});
+  EXPECT_FALSE(lp.interior.has_value());
+  EXPECT_GE(lp.relax.iterations, 1);
+  EXPECT_TRUE(lp.certified()) << lp.status();
+  EXPECT_EQ(lp.pattern.bonds, built.bonds);
+  EXPECT_LT(std::fabs(lp.pattern.packing.d / built.packing.d - 1), 1e-14L);
+}
+
+TEST(Pipeline, InteriorRelaxNeverLowersDAndDeclinesToTheLPs) {
+  // An interior-point relax that cannot finish (one Newton step per stage: no stage is centred)
+  // leaves d where it was, and the pipeline then hands over to the LPs: verdict, bonds and d
+  // exactly those of the LP path alone.
+  const Pattern built = build_pattern(catalogue(), {"even-ripple", 4, 0, ""});
+  const Packing start = perturbed(built.packing, 1e-4L, 3);
+  AnalysisOptions capped;
+  capped.interior_from = 0;
+  capped.interior.max_stage_steps = 1;
+  Packing moved = start;
+  const InteriorRelaxReport report = interior_relax(moved, capped.interior);
+  EXPECT_FALSE(report.converged);
+  EXPECT_GE(moved.d, report.d_start);
+  const Analysis a = analyze_packing(start, capped);
+  const Analysis lp = analyze_packing(start, {});
+  ASSERT_TRUE(a.interior.has_value());
+  EXPECT_FALSE(a.relax.interior);
+  EXPECT_GE(a.relax.iterations, 1);
+  EXPECT_EQ(a.status(), lp.status());
+  EXPECT_EQ(a.pattern.bonds, lp.pattern.bonds);
+  EXPECT_EQ(a.pattern.packing.d, lp.pattern.packing.d);
+  EXPECT_TRUE(a.certified()) << a.status();
+}
+
 TEST(Pipeline, MultiprecisionDigits) {
   // CONSTRUCTIONS: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) =
   // 0.17939690861186597956121884705073659574141764618876... (50 digits, mpmath).
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 3, 0, ""});
-  const Analysis a = analyze_packing(built.packing, {50});
+  AnalysisOptions fifty;
+  fifty.digits = 50;
+  const Analysis a = analyze_packing(built.packing, fifty);
   EXPECT_EQ(a.d_string(50), "0.17939690861186597956121884705073659574141764618876");
 }
 
