@@ -69,8 +69,8 @@ long double barrier_value(const std::vector<Term>& terms, const State& s, long d
 }
 
 struct NewtonStep {
-  Eigen::VectorXd y;  // displacement, 2 per disk
-  double gain = 0;    // change of D
+  Eigen::VectorXd y;     // displacement, 2 per disk
+  double gain = 0;       // change of D
   double decrement = 0;  // gradient . step: twice the predicted increase of F_t
   bool ok = false;
 };
@@ -78,8 +78,9 @@ struct NewtonStep {
 // The Gauss-Newton step of F_t: K [y; gain] = grad with K = sum over terms of a a^T / s^2 (a the
 // term's gradient in (x, D)), positive definite once 1e-15 of its largest diagonal is added
 // (disks with no near term would make it singular; 1e-12 slowed the sliding of nearly floppy
-// rows: 527 instead of 112 Newton steps for a billiards end state at n = 1000). The D row and column are dense, so
-// they are eliminated through a Schur complement: two solves with one factorization.
+// rows: 527 instead of 112 Newton steps for a billiards end state at n = 1000). The D row and
+// column are dense, so they are eliminated through a Schur complement: two solves with one
+// factorization.
 NewtonStep newton_step(const std::vector<Term>& terms, const State& s, long double t,
                        long double L) {
   const auto n = static_cast<Eigen::Index>(s.x.size());
@@ -217,6 +218,7 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
         break;
       }
       if (!line_search(terms, s, step, t, L)) break;
+      if (opt.on_step) opt.on_step(rep.newton_steps, s.D * d0);
     }
     if (!centred) break;
     if (rep.constraints / t < opt.final_gap) {

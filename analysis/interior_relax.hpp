@@ -14,10 +14,12 @@
 // Unlike relax's linear steps it also follows second-order gains (rows sliding across their
 // contacts): on billiards end states it can end higher than relax, at a degenerate maximum that
 // the first-order certificates cannot certify (n = 1000: d 1.8e-9 higher, every disk a rattler
-// by the surround test). What this proves: nothing. It only moves the packing close to a local maximum; the caller
-// identifies the bonds, polishes them and certifies the result (pipeline/analyze.cpp), and runs
-// the LP relax when that certificate declines.
+// by the surround test). What this proves: nothing. It only moves the packing close to a local
+// maximum; the caller identifies the bonds, polishes them and certifies the result
+// (pipeline/analyze.cpp), and runs the LP relax when that certificate declines.
 #pragma once
+
+#include <functional>
 
 #include "core/packing.hpp"
 
@@ -29,6 +31,8 @@ struct InteriorRelaxOptions {
   double t_factor = 8;               // t grows by this per stage
   int max_newton_steps = 400;        // over all stages
   int max_stage_steps = 80;          // a stage not centred by then ends the relax (declined)
+  // Called after every Newton step with its number and the current lower bound D on d.
+  std::function<void(int step, long double D)> on_step;
 };
 
 struct InteriorRelaxReport {

@@ -116,6 +116,7 @@ RelaxReport relax_packing(Packing& pk, const RelaxOptions& opt) {
       }
     }
     const long double d_trial = true_min_distance(trial, d);
+    if (opt.on_step) opt.on_step(rep.iterations, std::max(d, d_trial));
     if (d_trial > d) {
       pk.points = std::move(trial);
       d = d_trial;

@@ -8,6 +8,7 @@
 // the end are the contact forces: positive ones mark the contacts.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "core/packing.hpp"
@@ -22,6 +23,8 @@ struct RelaxOptions {
   // positions ~1e-4 d off, too far for bond identification.
   long double stationary = 1e-13L;
   int max_iterations = 300;
+  // Called after every LP step with its number and the current d (progress lines).
+  std::function<void(int step, long double d)> on_step;
 };
 
 struct RelaxReport {

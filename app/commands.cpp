@@ -4,13 +4,17 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
@@ -19,6 +23,7 @@
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/compare.hpp"
 #include "pipeline/explore.hpp"
+#include "pipeline/timing.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
 #include "report/packing_file.hpp"
@@ -94,6 +99,57 @@ std::function<void(const pipeline::SearchProgress&)> search_progress_line(int n)
   };
 }
 
+// A live line on a terminal for an analysis or build that has run over 2 s: the elapsed time,
+// the stage, its step and d, redrawn five times a second by a ticker thread (one stage can
+// last long without reporting: the LP-free certificate of 4Delta(224) takes 14 s). Shorter runs
+// print nothing. finish() stops the ticker and ends the line.
+class StageProgressLine {
+ public:
+  explicit StageProgressLine(std::string what) : what_(std::move(what)) {}
+  ~StageProgressLine() { finish(); }
+  pipeline::AnalysisProgressFn callback() {
+    if (!ticker_.joinable()) ticker_ = std::thread([this] { tick(); });
+    return [this](const pipeline::AnalysisProgress& p) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      latest_ = p;
+    };
+  }
+  void finish() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stopped_) return;
+      stopped_ = true;
+    }
+    wake_.notify_all();
+    if (ticker_.joinable()) ticker_.join();
+    if (width_ > 0) std::cerr << "\n";
+  }
+
+ private:
+  void tick() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stopped_; })) {
+      const double now = pipeline::seconds_since(start_);
+      if (now < 2) continue;
+      std::string line = fmt::format("\r{}: {:.1f} s, {}", what_, now, latest_.stage);
+      if (latest_.step > 0) line += fmt::format(" step {}", latest_.step);
+      if (latest_.d > 0) line += fmt::format(", d = {:.15Lg}", latest_.d);
+      const std::size_t length = line.size();
+      line.append(width_ > length ? width_ - length : 0, ' ');
+      width_ = length;
+      std::cerr << line << std::flush;
+    }
+  }
+  std::string what_;
+  pipeline::Clock::time_point start_ = pipeline::Clock::now();
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  pipeline::AnalysisProgress latest_;
+  bool stopped_ = false;
+  std::size_t width_ = 0;
+  std::thread ticker_;
+};
+
 pipeline::BilliardsSearch search_from(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   pipeline::BilliardsSearch search;
   search.scene = o.scene.empty() ? default_scene(static_cast<int>(o.n)) : load_scene(o.scene);
@@ -161,7 +217,9 @@ int cmd_classify(const GlobalOptions& g, long long n, const OutputOptions& out) 
 
 int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
-  const pipeline::BuildSettings settings{o.digits, o.polish, o.certify};
+  StageProgressLine progress("build");
+  pipeline::BuildSettings settings{o.digits, o.polish, o.certify, {}};
+  if (progress_wanted(o.out)) settings.progress = progress.callback();
   pipeline::BestBuild result;
   if (o.n) {
     if (!o.class_id.empty() || o.k != kUnsetK || o.p)
@@ -173,6 +231,7 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
     result.best =
         pipeline::build_and_certify(catalogue, {o.class_id, o.k, o.p, o.variant}, settings);
   }
+  progress.finish();
   print_result(result, o.out);
   if (!o.output.empty()) {
     const auto& b = result.best;
@@ -213,7 +272,10 @@ int cmd_analyze(const AnalyzeOptions& o) {
   }
   request.digits = o.digits;
   if (o.n) request.expected_n = o.n;
+  StageProgressLine progress("analyze");
+  if (progress_wanted(o.out)) request.progress = progress.callback();
   const auto result = pipeline::analyze_file(request);
+  progress.finish();
   for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
   print_result(result, o.out);
   if (!o.output.empty()) {

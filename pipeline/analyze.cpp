@@ -16,6 +16,8 @@ namespace tripack::pipeline {
 std::string Analysis::status() const {
   if (!identification.polish.converged)
     return "bond system has no solution near the relaxed state (not certified)";
+  if (pattern.bonds.empty())
+    return "no bonds: every disk is a rattler by the surround test (not certified)";
   if (!rigidity.rigid && rigidity.opening_bonds > 0)
     return fmt::format("NOT rigid: a first-order motion moves {} disks and opens {} bonds",
                        rigidity.moving_disks, rigidity.opening_bonds);
@@ -65,7 +67,13 @@ long double smallest_gap(const Pattern& pat) {
 // 0 >= g. So relax would stop after one LP without moving; skipping that LP (212 s at n = 5051,
 // where it is massively degenerate) changes nothing. Returns false, with `a` untouched, when the
 // start does not certify this way: the full pipeline then runs.
-bool certified_start(const Packing& start, Analysis& a) {
+// Reports a stage's start (or a step in it) when someone listens.
+void tell(const AnalysisProgressFn& progress, const std::string& stage, int step = 0,
+          long double d = 0) {
+  if (progress) progress({stage, step, d});
+}
+
+bool certified_start(const Packing& start, const AnalysisProgressFn& progress, Analysis& a) {
   const auto t0 = Clock::now();
   Analysis f;
   f.pattern.packing = start;
@@ -82,6 +90,7 @@ bool certified_start(const Packing& start, Analysis& a) {
   pk.d = min_pair_distance(pk.points, pk.d > 0 ? 1.5L * pk.d : 1);
   if (!std::isfinite(pk.d) || !(pk.d > 0)) return false;
   const long double d_start = pk.d;
+  tell(progress, "bonds + polish of the start", 0, pk.d);
   f.identification = timed(f.times.bonds, [&] { return identify_bonds(pk, {}); });
   if (!f.identification.polish.converged || f.identification.rejected > 0) return false;
   f.pattern.bonds = f.identification.bonds;
@@ -89,6 +98,7 @@ bool certified_start(const Packing& start, Analysis& a) {
   centre_pattern_rattlers(f.pattern);
   // The polished d must be the minimum distance: every non-bond gap clearly open.
   if (!(smallest_gap(f.pattern) > 1e-9L)) return false;
+  tell(progress, "LP-free certificate of the start", 0, pk.d);
   f.fast = timed(f.times.rigidity,
                  [&] { return fast_certificate(pk, f.pattern.bonds, f.pattern.rattlers); });
   if (!f.fast.accepted) return false;
@@ -108,13 +118,19 @@ bool certified_start(const Packing& start, Analysis& a) {
 
 // The interior-point relax, then the same test as certified_start on its result. On success `a`
 // is that analysis; otherwise `a` keeps only the interior report (and its time as relax time).
-bool certified_after_interior_relax(const Packing& start, const InteriorRelaxOptions& options,
+bool certified_after_interior_relax(const Packing& start, const AnalysisOptions& options,
                                     Analysis& a) {
   Packing moved = start;
   double seconds = 0;
-  const InteriorRelaxReport report = timed(seconds, [&] { return interior_relax(moved, options); });
+  InteriorRelaxOptions relax = options.interior;
+  if (options.progress)
+    relax.on_step = [&](int step, long double D) {
+      tell(options.progress, "relax (interior point)", step, D);
+    };
+  tell(options.progress, "relax (interior point)");
+  const InteriorRelaxReport report = timed(seconds, [&] { return interior_relax(moved, relax); });
   Analysis b;
-  if (report.converged && certified_start(moved, b)) {
+  if (report.converged && certified_start(moved, options.progress, b)) {
     b.relax.interior = true;
     b.relax.newton_steps = report.newton_steps;
     b.relax.d_start = report.d_start;
@@ -133,17 +149,25 @@ bool certified_after_interior_relax(const Packing& start, const InteriorRelaxOpt
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   Analysis a;
   const auto t0 = Clock::now();
-  if (!certified_start(start, a) &&
-      !(start.size() >= options.interior_from && certified_after_interior_relax(start, options.interior, a))) {
+  const auto& progress = options.progress;
+  if (!certified_start(start, progress, a) &&
+      !(start.size() >= options.interior_from &&
+        certified_after_interior_relax(start, options, a))) {
     a.pattern.packing = start;
     Packing& pk = a.pattern.packing;
-    a.relax = relax_packing(pk);
+    RelaxOptions relax;
+    if (progress)
+      relax.on_step = [&](int step, long double d) { tell(progress, "relax (LP steps)", step, d); };
+    tell(progress, "relax (LP steps)");
+    a.relax = relax_packing(pk, relax);
     a.times.relax = seconds_since(t0);  // declined fast paths count as relax time
+    tell(progress, "bonds + polish", 0, pk.d);
     a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, a.relax.active); });
     a.pattern.bonds = a.identification.bonds;
     a.pattern.rattlers = a.identification.rattlers;
     centre_pattern_rattlers(a.pattern);
     const Pattern& p = a.pattern;
+    tell(progress, "LP-free certificate", 0, pk.d);
     a.fast =
         timed(a.times.rigidity, [&] { return fast_certificate(p.packing, p.bonds, p.rattlers); });
     if (a.fast.accepted) {
@@ -151,15 +175,18 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
       a.stress = a.fast.stress;
     } else {
       const double fast_seconds = a.times.rigidity;
+      tell(progress, "rigidity LPs", 0, pk.d);
       a.rigidity =
           timed(a.times.rigidity, [&] { return test_rigidity(p.packing, p.bonds, p.rattlers); });
       a.times.rigidity += fast_seconds;
+      tell(progress, "stress LP", 0, pk.d);
       a.stress =
           timed(a.times.stress, [&] { return stress_certificate(p.packing, p.bonds, p.rattlers); });
     }
   }
   Packing& pk = a.pattern.packing;
   a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
+  if (options.digits > 18) tell(progress, "multiprecision polish", 0, pk.d);
   if (options.digits > 18)
     a.multiprecision = timed(a.times.multiprecision, [&] {
       return polish_multiprecision(pk, a.pattern.bonds, a.pattern.rattlers, options.digits);
@@ -209,6 +236,7 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   result.read_seconds = seconds_since(start);
   AnalysisOptions options;
   options.digits = request.digits;
+  options.progress = request.progress;
   result.analysis = analyze_packing(reading.packing, options);
   const auto& mp = result.analysis.multiprecision;
   if (mp && mp->converged && result.convention != Convention::UnitTriangle)

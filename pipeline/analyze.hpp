@@ -3,6 +3,7 @@
 // search all use it.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,15 @@ struct StageTimes {
   }
 };
 
+// What a long analysis is doing, for a progress line (the pipeline prints nothing): a stage's
+// start (step 0) and, in relax, every step with the current d.
+struct AnalysisProgress {
+  std::string stage;
+  int step = 0;
+  long double d = 0;  // 0: not known at this point
+};
+using AnalysisProgressFn = std::function<void(const AnalysisProgress&)>;
+
 struct AnalysisOptions {
   int digits = 15;  // > 18: polish in MPFR to this many digits
   // From this many disks, a start that does not certify as it is is first moved by the
@@ -32,6 +42,7 @@ struct AnalysisOptions {
   // certify either. Below it the LP relax is fast (n = 254: 0.1 s) and decides alone.
   std::size_t interior_from = 500;
   InteriorRelaxOptions interior;
+  AnalysisProgressFn progress;
 };
 
 struct Analysis {
@@ -63,6 +74,7 @@ struct AnalyzeRequest {
   std::optional<Convention> convention;  // none: unit-triangle, or radius for an x y r file
   int digits = 15;
   std::optional<long long> expected_n;
+  AnalysisProgressFn progress;
 };
 struct FileAnalysis {
   std::string file;

@@ -29,8 +29,13 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
                               const BuildSettings& settings) {
   BuildResult b;
   b.digits = settings.digits;
+  auto tell = [&](const char* stage) {
+    if (settings.progress) settings.progress({stage, 0, 0});
+  };
+  tell("construct");
   b.pattern = timed(b.times.construct, [&] { return build_pattern(catalogue, request); });
   if (settings.polish) {
+    tell("polish of the builder's bonds");
     b.polish = timed(b.polish_seconds, [&] {
       return polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
     });
@@ -40,6 +45,7 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
           fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
                       static_cast<double>(b.polish.max_residual), b.polish.iterations));
   }
+  if (b.pattern.exact) tell("exact check");
   if (b.pattern.exact) b.exact = timed(b.times.exact, [&] { return exact_check(b.pattern); });
   const bool certify =
       settings.certify && settings.polish && b.pattern.packing.size() <= kCertifyLimit;
@@ -47,8 +53,10 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
   if (certify) {
     AnalysisOptions options;
     options.digits = settings.digits;
+    options.progress = settings.progress;
     b.analysis = analyze_packing(b.pattern.packing, options);
   } else if (settings.digits > 18) {
+    tell("multiprecision polish");
     b.multiprecision = timed(b.times.multiprecision, [&] {
       return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,
                                    settings.digits);

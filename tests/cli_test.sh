@@ -264,5 +264,15 @@ printf 'n: 10\neffects:\n  growth: {rate: 0.01}\n' >"${TMPDIR:-/tmp}/tripack_no_
 expect_error "growth without thermostat" "growth needs a thermostat" billiards --scene "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 rm -f "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 
+# Progress (issue 10): on a terminal (script(1) gives the command a pty), a stage running over 2 s
+# shows a live line with the stage; a quick command shows none.
+if command -v script >/dev/null; then
+  slow=$(script -qec "$TRIPACK build four-delta --k 150" /dev/null)
+  quick=$(script -qec "$TRIPACK build even-ripple --k 3" /dev/null)
+  if grep -q $'\rbuild: [0-9.]* s, LP-free certificate of the start' <<<"$slow" &&
+     grep -q "verdict *certified" <<<"$slow" && ! grep -q $'\rbuild:' <<<"$quick"; then
+    pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: progress line on a terminal"; fi
+fi
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
