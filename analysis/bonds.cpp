@@ -89,7 +89,7 @@ std::vector<Gap> smallest_gaps(const Packing& pk, const std::vector<Bond>& bonds
 }
 
 BondIdentification identify_bonds(Packing& pk, const std::vector<Bond>& loaded,
-                                  long double gap_threshold) {
+                                  long double gap_threshold, std::size_t max_rejections) {
   BondIdentification out;
   // Candidates: loaded contacts plus near-exact contacts; remember each one's gap.
   std::vector<std::pair<Bond, long double>> gap_only;
@@ -122,7 +122,7 @@ BondIdentification identify_bonds(Packing& pk, const std::vector<Bond>& loaded,
     pk = start;
     out.polish = polish_bond_system(pk, bonds, out.rattlers);
     out.bonds = std::move(bonds);
-    if (out.polish.converged || drop >= gap_only.size()) break;
+    if (out.polish.converged || drop >= gap_only.size() || drop >= max_rejections) break;
     // Inconsistent: the widest gap-only candidate is the likeliest false contact.
     std::erase(cand, gap_only[drop].first);
     ++out.rejected;

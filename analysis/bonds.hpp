@@ -2,10 +2,11 @@
 // are held, and how small the remaining gaps are.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
-#include "polish/polish.hpp"
 #include "core/packing.hpp"
+#include "polish/polish.hpp"
 
 namespace tripack {
 
@@ -41,7 +42,10 @@ struct BondIdentification {
 // The threshold: relax fixes d to ~1e-14 but positions along near-degenerate directions only to
 // ~1e-7 d (sparse-rows k = 9), so true contacts can be that far open; real near contacts start
 // at ~4e-6 d there (1.7e-3 d in t33a), and false candidates fail the consistency test.
+// At most `max_rejections` candidates are dropped (each costs a polish): a caller that only
+// wants the contacts as they are passes 0 and gets the failed polish at once.
 BondIdentification identify_bonds(Packing& packing, const std::vector<Bond>& loaded,
-                                  long double gap_threshold = 1e-6L);
+                                  long double gap_threshold = 1e-6L,
+                                  std::size_t max_rejections = SIZE_MAX);
 
 }  // namespace tripack

@@ -36,7 +36,10 @@ Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double 
   constexpr long double r = 0.70710678118654752440L;
   static const Vec2L dirs[8] = {{1, 0}, {-1, 0}, {0, 1},  {0, -1},
                                 {r, r}, {-r, r}, {r, -r}, {-r, -r}};
-  while (h > 1e-13L) {
+  // At most 64 moves per step size: a disk wedged between contacts (no real rattler) can creep
+  // along a ridge of the max-min by ever smaller gains (55 s for the 991 such disks of a
+  // perturbed pattern).
+  for (int moves = 0; h > 1e-13L; ++moves) {
     bool moved = false;
     for (const auto& d : dirs) {
       const Vec2L t = p + d * h;
@@ -47,7 +50,10 @@ Vec2L centre_in_cage(Vec2L p, const std::vector<Vec2L>& neighbours, long double 
         moved = true;
       }
     }
-    if (!moved) h /= 2;
+    if (!moved || moves == 64) {
+      h /= 2;
+      moves = 0;
+    }
   }
   return p;
 }
