@@ -272,6 +272,7 @@ int cmd_analyze(const AnalyzeOptions& o) {
   }
   request.digits = o.digits;
   if (o.n) request.expected_n = o.n;
+  request.lp_any_size = o.lp_any_size;
   StageProgressLine progress("analyze");
   if (progress_wanted(o.out)) request.progress = progress.callback();
   const auto result = pipeline::analyze_file(request);

@@ -50,8 +50,9 @@ struct AnalyzeOptions {
   std::string file;
   std::string convention;  // empty: unit-triangle (radius for an x y r file)
   int digits = 15;
-  long long n = 0;     // expected number of points (0: any)
-  std::string output;  // -o FILE: the certified packing (unit triangle)
+  long long n = 0;           // expected number of points (0: any)
+  std::string output;        // -o FILE: the certified packing (unit triangle)
+  bool lp_any_size = false;  // run the LP relax and certificates above AnalysisOptions::lp_limit
   OutputOptions out;
 };
 

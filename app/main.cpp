@@ -66,6 +66,10 @@ Action add_analyze(CLI::App& cli, AnalyzeOptions& a) {
   c->add_option("--n", a.n, "expected number of points")->check(CLI::Range(1LL, 100000000LL));
   c->add_option("-o,--output", a.output,
                 "write the certified packing: .txt, .csv, .json or .pck (i x y)");
+  c->add_flag("--lp-any-size", a.lp_any_size,
+              "run the LP relax and certificates however large n is (above 3000 disks they can "
+              "take hours; by default a state the LP-free path cannot certify is then reported "
+              "not certified)");
   add_output_flags(c, a.out, true);
   add_diagram_options(c, a.diagrams);
   return [c, &a] { return *c ? cmd_analyze(a) : -1; };

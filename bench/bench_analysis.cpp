@@ -119,6 +119,25 @@ BENCHMARK(BM_CertifyBuilt)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
+// Issue 10: 4Delta(k) with 10^5 disks (k = 224, n = 100,800), built, then perturbed by 1e-6 d.
+void BM_CertifyFourDelta(benchmark::State& s) {
+  const Pattern pat = build_four_delta(s.range(0));
+  const Packing start = s.range(1) ? noisy(pat.packing, 1e-6L) : pat.packing;
+  for (auto _ : s) {
+    const pipeline::Analysis a = pipeline::analyze_packing(start, {});
+    if (!a.certified()) s.SkipWithError("not certified");
+    s.counters["relax_s"] = a.times.relax;
+    s.counters["bonds_s"] = a.times.bonds;
+    s.counters["certify_s"] = a.times.rigidity + a.times.stress;
+  }
+  set_n(s, pat.packing.size());
+}
+BENCHMARK(BM_CertifyFourDelta)
+    ->Args({224, 0})
+    ->Args({224, 1})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
 // Issue 10: the same patterns with every coordinate moved by up to 1e-6 d: no optimum, so the
 // start does not certify; the interior-point relax brings it back and the LP-free certificate
 // proves the result (no LP at any size).

@@ -18,6 +18,10 @@ std::string Analysis::status() const {
     return "bond system has no solution near the relaxed state (not certified)";
   if (pattern.bonds.empty())
     return "no bonds: every disk is a rattler by the surround test (not certified)";
+  if (lps_skipped && !fast.accepted)
+    return "not certified: the LP-free certificate declined (" + fast.declined +
+           "), and the LPs are not run above " + std::to_string(lp_limit) +
+           " disks (analyze --lp-any-size runs them)";
   if (!rigidity.rigid && rigidity.opening_bonds > 0)
     return fmt::format("NOT rigid: a first-order motion moves {} disks and opens {} bonds",
                        rigidity.moving_disks, rigidity.opening_bonds);
@@ -124,8 +128,8 @@ bool certified_start(const Packing& start, const AnalysisProgressFn& progress, A
 // The interior-point relax, then the same test as certified_start on its result. On success `a`
 // is that analysis; otherwise `a` keeps only the interior report (and its time as relax time).
 bool certified_after_interior_relax(const Packing& start, const AnalysisOptions& options,
-                                    Analysis& a) {
-  Packing moved = start;
+                                    Analysis& a, Packing& moved) {
+  moved = start;
   double seconds = 0;
   InteriorRelaxOptions relax = options.interior;
   if (options.progress)
@@ -149,45 +153,65 @@ bool certified_after_interior_relax(const Packing& start, const AnalysisOptions&
   return false;
 }
 
+// Bonds (the `loaded` contacts and those within 1e-6 d), rattlers centred, the LP-free
+// certificate, and the rigidity and stress LPs when it declines and `lps` allows them.
+void bonds_and_certificates(Analysis& a, const std::vector<Bond>& loaded, bool lps,
+                            const AnalysisProgressFn& progress) {
+  Packing& pk = a.pattern.packing;
+  tell(progress, "bonds + polish", 0, pk.d);
+  a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, loaded); });
+  a.pattern.bonds = a.identification.bonds;
+  a.pattern.rattlers = a.identification.rattlers;
+  centre_pattern_rattlers(a.pattern);
+  const Pattern& p = a.pattern;
+  tell(progress, "LP-free certificate", 0, pk.d);
+  a.fast =
+      timed(a.times.rigidity, [&] { return fast_certificate(p.packing, p.bonds, p.rattlers); });
+  if (a.fast.accepted) {
+    a.rigidity.rigid = true;
+    a.stress = a.fast.stress;
+    return;
+  }
+  if (!lps) return;
+  const double fast_seconds = a.times.rigidity;
+  tell(progress, "rigidity LPs", 0, pk.d);
+  a.rigidity =
+      timed(a.times.rigidity, [&] { return test_rigidity(p.packing, p.bonds, p.rattlers); });
+  a.times.rigidity += fast_seconds;
+  tell(progress, "stress LP", 0, pk.d);
+  a.stress =
+      timed(a.times.stress, [&] { return stress_certificate(p.packing, p.bonds, p.rattlers); });
+}
+
 }  // namespace
 
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   Analysis a;
   const auto t0 = Clock::now();
   const auto& progress = options.progress;
-  if (!certified_start(start, progress, a) &&
-      !(start.size() >= options.interior_from &&
-        certified_after_interior_relax(start, options, a))) {
+  if (certified_start(start, progress, a)) {
+  } else if (Packing moved; start.size() >= options.interior_from &&
+                            certified_after_interior_relax(start, options, a, moved)) {
+  } else if (start.size() > options.lp_limit && a.interior) {
+    // Too large for the LPs: the interior-point relax's result, with what the LP-free
+    // certificate says of it.
+    a.lps_skipped = true;
+    a.lp_limit = options.lp_limit;
+    a.pattern.packing = moved;
+    a.relax.d_start = a.interior->d_start;
+    a.relax.d_end = moved.d;
+    a.relax.newton_steps = a.interior->newton_steps;
+    a.times.relax = seconds_since(t0);
+    bonds_and_certificates(a, {}, false, progress);
+  } else {
     a.pattern.packing = start;
-    Packing& pk = a.pattern.packing;
     RelaxOptions relax;
     if (progress)
       relax.on_step = [&](int step, long double d) { tell(progress, "relax (LP steps)", step, d); };
     tell(progress, "relax (LP steps)");
-    a.relax = relax_packing(pk, relax);
+    a.relax = relax_packing(a.pattern.packing, relax);
     a.times.relax = seconds_since(t0);  // declined fast paths count as relax time
-    tell(progress, "bonds + polish", 0, pk.d);
-    a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, a.relax.active); });
-    a.pattern.bonds = a.identification.bonds;
-    a.pattern.rattlers = a.identification.rattlers;
-    centre_pattern_rattlers(a.pattern);
-    const Pattern& p = a.pattern;
-    tell(progress, "LP-free certificate", 0, pk.d);
-    a.fast =
-        timed(a.times.rigidity, [&] { return fast_certificate(p.packing, p.bonds, p.rattlers); });
-    if (a.fast.accepted) {
-      a.rigidity.rigid = true;
-      a.stress = a.fast.stress;
-    } else {
-      const double fast_seconds = a.times.rigidity;
-      tell(progress, "rigidity LPs", 0, pk.d);
-      a.rigidity =
-          timed(a.times.rigidity, [&] { return test_rigidity(p.packing, p.bonds, p.rattlers); });
-      a.times.rigidity += fast_seconds;
-      tell(progress, "stress LP", 0, pk.d);
-      a.stress =
-          timed(a.times.stress, [&] { return stress_certificate(p.packing, p.bonds, p.rattlers); });
-    }
+    bonds_and_certificates(a, a.relax.active, true, progress);
   }
   Packing& pk = a.pattern.packing;
   a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
@@ -242,6 +266,7 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   AnalysisOptions options;
   options.digits = request.digits;
   options.progress = request.progress;
+  if (request.lp_any_size) options.lp_limit = SIZE_MAX;
   result.analysis = analyze_packing(reading.packing, options);
   const auto& mp = result.analysis.multiprecision;
   if (mp && mp->converged && result.convention != Convention::UnitTriangle)

@@ -42,6 +42,10 @@ struct AnalysisOptions {
   // certify either. Below it the LP relax is fast (n = 254: 0.1 s) and decides alone.
   std::size_t interior_from = 500;
   InteriorRelaxOptions interior;
+  // Above this many disks a state that neither certifies as it is nor after the interior-point
+  // relax is not handed to the LPs (a billiards end state at n = 5000: the LP relax took over
+  // N min); it is reported "not certified" with the LP-free certificate's reason.
+  std::size_t lp_limit = 3000;
   AnalysisProgressFn progress;
 };
 
@@ -55,6 +59,8 @@ struct Analysis {
   // The interior-point relax, when it ran (n >= interior_from and the start did not certify).
   // If its result did not certify, the LP relax decided and this keeps what it reached.
   std::optional<InteriorRelaxReport> interior;
+  bool lps_skipped = false;  // n > lp_limit: the result is the interior-point relax's
+  std::size_t lp_limit = 0;  // (for the verdict's wording)
   std::optional<MultiprecisionPolish> multiprecision;
   std::vector<Gap> gaps;  // the 64 smallest non-bond gaps (near contacts and rattlers' play)
   StageTimes times;
@@ -74,6 +80,7 @@ struct AnalyzeRequest {
   std::optional<Convention> convention;  // none: unit-triangle, or radius for an x y r file
   int digits = 15;
   std::optional<long long> expected_n;
+  bool lp_any_size = false;  // lp_limit lifted
   AnalysisProgressFn progress;
 };
 struct FileAnalysis {

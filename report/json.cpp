@@ -47,9 +47,10 @@ json certificate_json(const Analysis& a) {
           {"certified", a.certified()},
           {"verdict", a.status()},
           {"relax_iterations", a.relax.iterations},
-          {"relax_method", a.relax.interior    ? "interior point"
-                           : a.relax.fast_path ? "start certified"
-                                               : "linear programs"},
+          {"relax_method", a.relax.interior || a.lps_skipped ? "interior point"
+                           : a.relax.fast_path               ? "start certified"
+                                                             : "linear programs"},
+          {"lps_skipped", a.lps_skipped},
           {"interior_d", a.interior ? json(decimal17(a.interior->d_end)) : json(nullptr)}};
 }
 

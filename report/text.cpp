@@ -56,6 +56,8 @@ void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
            a.relax.interior
                ? fmt::format("interior point, {} Newton steps, no LP (its result certified)",
                              a.relax.newton_steps)
+           : a.lps_skipped
+               ? fmt::format("interior point, {} Newton steps, no LP", a.relax.newton_steps)
            : a.relax.fast_path
                ? "no LP (the start certified as a strict local optimum)"
                : fmt::format("{} LP steps, {}", a.relax.iterations,
@@ -65,11 +67,17 @@ void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
   if (a.interior && !a.relax.interior)
     line(out, "interior",
          fmt::format("the interior-point relax reached d = {:.17Lg} ({} Newton steps{}), which did "
-                     "not certify; the LP relax decided",
+                     "not certify; {}",
                      a.interior->d_end, a.interior->newton_steps,
-                     a.interior->converged ? "" : ", not converged"));
+                     a.interior->converged ? "" : ", not converged",
+                     a.lps_skipped ? "this is its result (no LPs above " +
+                                         std::to_string(a.lp_limit) + " disks)"
+                                   : "the LP relax decided"));
   line(out, "rigidity",
-       a.rigidity.rigid
+       a.lps_skipped && !a.fast.accepted
+           ? "not decided: the LP-free certificate declined (" + a.fast.declined +
+                 "); no LPs above " + std::to_string(a.lp_limit) + " disks"
+       : a.rigidity.rigid
            ? fmt::format("jammed (no first-order motion of the non-rattlers); {}",
                          a.fast.accepted ? "LP-free certificate"
                                          : "LPs (fast path declined: " + a.fast.declined + ")")
@@ -274,9 +282,13 @@ void render_text(std::ostream& out, const FileAnalysis& f, const RenderOptions&)
   line(out, "L", f.L_string(f.digits));
   line(out, "delta(n)", format_significant(oler_delta(n, 1 / pk.d), 15));
   line(out, "bonds", std::to_string(a.pattern.bonds.size()));
+  // The first 40 rattlers by index (--json lists them all in rattler_indices).
+  const auto& rattlers = a.pattern.rattlers;
+  const std::size_t shown = std::min<std::size_t>(rattlers.size(), 40);
   line(out, "rattlers",
-       fmt::format("{}{}{}", a.pattern.rattlers.size(), a.pattern.rattlers.empty() ? "" : " : ",
-                   fmt::join(a.pattern.rattlers, " ")));
+       fmt::format("{}{}{}{}", rattlers.size(), rattlers.empty() ? "" : " : ",
+                   fmt::join(rattlers.begin(), rattlers.begin() + static_cast<long>(shown), " "),
+                   shown < rattlers.size() ? " ..." : ""));
   analysis_lines(out, a, true);
 }
 

@@ -144,6 +144,16 @@ TEST(Pipeline, InteriorRelaxNeverLowersDAndDeclinesToTheLPs) {
   EXPECT_EQ(a.pattern.bonds, lp.pattern.bonds);
   EXPECT_EQ(a.pattern.packing.d, lp.pattern.packing.d);
   EXPECT_TRUE(a.certified()) << a.status();
+  // Above lp_limit the LPs do not run: the interior result is reported, not certified, and its
+  // d is never below the start's.
+  AnalysisOptions no_lps = capped;
+  no_lps.lp_limit = 0;
+  const Analysis skipped = analyze_packing(start, no_lps);
+  EXPECT_TRUE(skipped.lps_skipped);
+  EXPECT_EQ(skipped.relax.iterations, 0);
+  EXPECT_FALSE(skipped.certified());
+  EXPECT_NE(skipped.status().find("not certified"), std::string::npos) << skipped.status();
+  EXPECT_GE(skipped.pattern.packing.d, report.d_start);
 }
 
 TEST(Pipeline, ProgressReportsEveryStageInOrder) {
