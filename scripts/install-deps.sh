@@ -15,6 +15,7 @@ PKGS=(
   libfmt-dev           # formatting
   nlohmann-json3-dev   # JSON output and input
   libcairo2-dev        # packing diagrams (SVG, PNG, PDF) drawn like the paper's figures
+  libsqlite3-dev       # the campaign results database (WAL: a killed campaign keeps every finished unit)
   fonts-dejavu-core    # the diagrams' font, named explicitly so labels look the same everywhere
   gnuplot-nox          # draws the delta(n) and accuracy plots (svg, pngcairo, pdfcairo terminals)
   libgtest-dev googletest libbenchmark-dev
