@@ -184,6 +184,72 @@ bool refine_colours(const std::vector<std::vector<int>>& adj_a,
   }
 }
 
+std::uint64_t fnv1a(std::uint64_t hash, std::uint64_t value) {
+  for (int byte = 0; byte < 8; ++byte) {
+    hash ^= (value >> (8 * byte)) & 0xff;
+    hash *= 1099511628211ULL;
+  }
+  return hash;
+}
+
+}  // namespace
+
+std::string contact_graph_hash(const Pattern& pattern) {
+  const std::size_t n = pattern.packing.size();
+  std::vector<char> held(n, 0);
+  for (const auto& b : pattern.bonds) {
+    held[static_cast<std::size_t>(b.a)] = 1;
+    if (!b.is_wall()) held[static_cast<std::size_t>(b.b)] = 1;
+  }
+  for (int r : pattern.rattlers) held[static_cast<std::size_t>(r)] = 0;
+  // Vertices: disks 0..n-1 (rattlers isolated and left out of the colours), walls n..n+2.
+  std::vector<std::vector<int>> adj(n + 3);
+  for (const auto& b : pattern.bonds) {
+    if (!held[static_cast<std::size_t>(b.a)] ||
+        (!b.is_wall() && !held[static_cast<std::size_t>(b.b)]))
+      continue;
+    const int other = b.is_wall() ? static_cast<int>(n) + static_cast<int>(b.side()) : b.b;
+    adj[static_cast<std::size_t>(b.a)].push_back(other);
+    adj[static_cast<std::size_t>(other)].push_back(b.a);
+  }
+  std::vector<std::size_t> vertices;
+  for (std::size_t v = 0; v < n + 3; ++v)
+    if (v >= n || held[v]) vertices.push_back(v);
+  std::vector<std::uint64_t> colour(n + 3, 1);
+  for (std::size_t v = n; v < n + 3; ++v) colour[v] = 2;
+  auto distinct = [&] {
+    std::vector<std::uint64_t> c;
+    for (std::size_t v : vertices) c.push_back(colour[v]);
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  std::vector<std::uint64_t> sorted = distinct();
+  std::size_t classes = 2, rounds = 0;
+  for (; rounds <= vertices.size(); ++rounds) {
+    std::vector<std::uint64_t> next(n + 3, 0), neighbours;
+    for (std::size_t v : vertices) {
+      neighbours.clear();
+      for (int w : adj[v]) neighbours.push_back(colour[static_cast<std::size_t>(w)]);
+      std::sort(neighbours.begin(), neighbours.end());
+      std::uint64_t h = fnv1a(14695981039346656037ULL, colour[v]);
+      for (auto c : neighbours) h = fnv1a(h, c);
+      next[v] = h;
+    }
+    colour = std::move(next);
+    sorted = distinct();
+    const auto count =
+        static_cast<std::size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+    sorted = distinct();
+    if (count == classes) break;  // stable partition
+    classes = count;
+  }
+  std::uint64_t h = fnv1a(14695981039346656037ULL, vertices.size());
+  for (auto c : sorted) h = fnv1a(h, c);
+  return fmt::format("{:016x}", h);
+}
+
+namespace {
+
 // VF2 on the colour-refined graphs. Returns the symmetry whose side permutation the found
 // isomorphism applies to the walls, or nullopt when the graphs are not isomorphic.
 std::optional<Symmetry> vf2_isomorphism(const Reduced& a, const Reduced& b, bool& refuted) {

@@ -36,6 +36,13 @@ Comparison compare_packings(const Pattern& a, const Pattern& b,
                             long double d_relative_tolerance = 1e-12L,
                             long double position_tolerance = 1e-9L);
 
+// A hash of the contact graph (rattlers removed, the three walls as vertices of one kind) by
+// colour refinement, the same for every relabelling of the disks and every symmetry of the
+// triangle; 16 hex digits (FNV-1a 64 over the refined colours, so equal on every machine).
+// Different graphs can share it (refinement does not separate every pair), so stores key a
+// packing by (n, this hash, d) and compare_packings decides when it matters.
+std::string contact_graph_hash(const Pattern& pattern);
+
 // Groups patterns into classes of "the same packing" (compare_packings(...).same, default
 // position tolerance); returns a class id per input, ids 0, 1, ... in first-seen order.
 std::vector<int> distinct_packings(const std::vector<Pattern>& patterns,

@@ -151,6 +151,25 @@ TEST(Compare, SymmetricImagesAreTheSame) {
   }
 }
 
+TEST(Compare, GraphHashIsInvariantAndSeparatesTheT17AndT31Packings) {
+  // Invariant: every symmetry and relabelling of t22a, t17a42 and t31a81.1 hashes alike.
+  for (const Pattern& p : {build_chain_family({3, 1, 1}), build_twin(2, 1), build_twin(3, 1)}) {
+    const std::string h = contact_graph_hash(p);
+    EXPECT_EQ(h.size(), 16u);
+    for (Symmetry g : kSymmetries)
+      EXPECT_EQ(contact_graph_hash(shuffled(transformed(p, g), 31)), h) << symmetry_name(g);
+  }
+  // Separating: the three t17 packings (one d) and t31a81.1 / t31a81.2 (one d, 81 bonds each)
+  // have pairwise different hashes, as their graphs differ (see the test above).
+  const std::vector<std::string> t17{contact_graph_hash(build_twin(2, 0)),
+                                     contact_graph_hash(build_twin(2, 1)),
+                                     contact_graph_hash(build_twin(2, 2))};
+  EXPECT_NE(t17[0], t17[1]);
+  EXPECT_NE(t17[0], t17[2]);
+  EXPECT_NE(t17[1], t17[2]);
+  EXPECT_NE(contact_graph_hash(build_twin(3, 1)), contact_graph_hash(build_twin(3, 2)));
+}
+
 TEST(Compare, RelabelledCopyIsTheSame) {
   const Pattern p = build_chain_family({3, 1, 1});  // t22a, 2 rattlers
   const Pattern q = shuffled(p, 12345);
