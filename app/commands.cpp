@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "campaign/campaign.hpp"
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"
@@ -414,6 +415,66 @@ int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
   options.width_pixels = o.width;
   report::draw_packing(diagram, o.output, options);
   std::cout << o.output << "\n";
+  return 0;
+}
+
+namespace {
+
+// One line per n: n, d with every stored digit, the label (the best of n is rank a), the runs
+// that ended in it, its first seed and whether it is certified.
+void print_best(const std::vector<store::StoredPacking>& best) {
+  std::cout << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}\n", "n", "d", "label", "runs",
+                           "first seed");
+  for (const auto& p : best)
+    std::cout << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}\n", p.n, p.d,
+                             fmt::format("t{}{}", p.n, pipeline::rank_letters(0)), p.runs,
+                             p.first_seed);
+}
+
+}  // namespace
+
+int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
+  const auto [first, last] = parse_range(o.n_range);
+  campaign::CampaignRequest request;
+  request.n_first = first;
+  request.n_last = last;
+  request.runs = o.runs;
+  request.seed = o.seed;
+  request.threads = o.threads;
+  request.db = o.db;
+  if (!o.scene.empty()) request.scene = load_scene(o.scene);
+  request.tool_version = "tripack " TRIPACK_VERSION;
+  const bool tty = isatty(fileno(stderr));
+  explore_cancel = false;
+  std::signal(SIGINT, on_interrupt);
+  const auto result =
+      campaign::run_campaign(request, &explore_cancel, [tty](const campaign::CampaignProgress& p) {
+        const double eta = p.done > 0 ? p.elapsed / static_cast<double>(p.done) *
+                                            static_cast<double>(p.total - p.done)
+                                      : 0.0;
+        const std::string line =
+            fmt::format("campaign: {}/{} units ({} already recorded), last n = {}{}, ETA {:.0f} s",
+                        p.done, p.total, p.skipped, p.n,
+                        p.d > 0 ? fmt::format(" d = {:.15Lg}", p.d) : " not certified", eta);
+        if (tty) std::cerr << "\r" << line << "     " << std::flush;
+      });
+  std::signal(SIGINT, SIG_DFL);
+  if (tty) std::cerr << "\n";
+  std::cout << fmt::format(
+      "campaign {}..{} x {} runs: {} units, {} already in {}, {} recorded now ({} certified, {} "
+      "errors){}, {:.1f} s\n",
+      first, last, o.runs, result.units, result.skipped, o.db, result.recorded, result.certified,
+      result.errors, result.cancelled ? ", interrupted (rerun to continue)" : "", result.seconds);
+  print_best(result.best);
+  return result.cancelled ? 130 : 0;
+}
+
+int cmd_db_best(const DbOptions& o) {
+  if (!std::filesystem::exists(o.db)) throw std::invalid_argument("no database " + o.db);
+  const store::ResultsDb db = store::ResultsDb::open(o.db);
+  std::vector<store::StoredPacking> best = db.best_per_n();
+  if (o.n) std::erase_if(best, [&](const auto& p) { return p.n != o.n; });
+  print_best(best);
   return 0;
 }
 

@@ -96,6 +96,22 @@ struct DrawOptions {
 };
 int cmd_draw(const GlobalOptions& g, const DrawOptions& o);
 
+// `tripack campaign` and `tripack db best` (issue 11, first part: threads, no MPI yet).
+struct CampaignOptions {
+  std::string n_range;  // "A..B" or "N"
+  int runs = 20;
+  std::uint64_t seed = 1;
+  int threads = 1;
+  std::string db = "tripack.db";
+  std::string scene;  // YAML: effects and stop rule for every n
+};
+int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o);
+struct DbOptions {
+  std::string db = "tripack.db";
+  long long n = 0;  // 0: every n
+};
+int cmd_db_best(const DbOptions& o);
+
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o);
 
 int cmd_classes(const GlobalOptions& g, const OutputOptions& out);

@@ -146,6 +146,29 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
   return [c, &g, &o] { return *c ? cmd_explore(g, o) : -1; };
 }
 
+Action add_campaign(CLI::App& cli, const GlobalOptions& g, CampaignOptions& o) {
+  auto* c = cli.add_subcommand(
+      "campaign",
+      "Billiards runs over a range of n as work units (n, seed) on threads; every finished unit "
+      "goes to an SQLite database at once, and rerunning continues where it stopped");
+  c->add_option("--n", o.n_range, "A..B or N")->required();
+  c->add_option("--runs", o.runs, "seeds per n (default 20)")->check(CLI::Range(1, 1000000));
+  c->add_option("--seed", o.seed, "first seed (default 1)");
+  c->add_option("--threads", o.threads, "parallel units (default 1)")->check(CLI::Range(1, 256));
+  c->add_option("--db", o.db, "results database (default tripack.db)");
+  c->add_option("--scene", o.scene, "scene YAML (effects, stop rule) for every n");
+  return [c, &g, &o] { return *c ? cmd_campaign(g, o) : -1; };
+}
+
+Action add_db(CLI::App& cli, DbOptions& o) {
+  auto* c = cli.add_subcommand("db", "Read a campaign database");
+  c->require_subcommand(1);
+  auto* best = c->add_subcommand("best", "One line per n: n, the best certified d, its label");
+  best->add_option("N", o.n, "only this n")->check(CLI::Range(2LL, 100000000LL));
+  best->add_option("--db", o.db, "results database (default tripack.db)");
+  return [best, &o] { return *best ? cmd_db_best(o) : -1; };
+}
+
 bool wants_json(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--json") return true;
@@ -188,7 +211,11 @@ int main(int argc, char** argv) {
   BilliardsCommandOptions billiards, compare;
   ExploreOptions explore;
   DrawOptions draw;
+  CampaignOptions campaign;
+  DbOptions db;
   const std::vector<Action> actions{
+      add_campaign(cli, g, campaign),
+      add_db(cli, db),
       add_build(cli, g, build),
       add_analyze(cli, analyze),
       add_check_formula(cli, g, check),

@@ -264,6 +264,18 @@ printf 'n: 10\neffects:\n  growth: {rate: 0.01}\n' >"${TMPDIR:-/tmp}/tripack_no_
 expect_error "growth without thermostat" "growth needs a thermostat" billiards --scene "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 rm -f "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 
+# Campaigns (issue 11): a small campaign, its rerun (nothing repeated), db best, bad input.
+cdb="${TMPDIR:-/tmp}/tripack_cli_campaign_$$.db"
+rm -f "$cdb" "$cdb-wal" "$cdb-shm"
+expect_output "campaign records units" "6 recorded now" campaign --n 10..11 --runs 3 --threads 2 --db "$cdb"
+expect_output "campaign rerun repeats nothing" "6 already in" campaign --n 10..11 --runs 3 --db "$cdb"
+expect_output "db best, one line per n" "t11a" db best --db "$cdb"
+expect_error "campaign range without n >= 2" "has no n >= 2" campaign --n 0..1 --db "$cdb"
+printf 'x y\n0.1 0.2\n' >"$cdb.txt"
+expect_error "db best on a text file" "not a tripack database" db best --db "$cdb.txt"
+expect_error "campaign on a text file" "not a tripack database" campaign --n 5 --db "$cdb.txt"
+rm -f "$cdb" "$cdb-wal" "$cdb-shm" "$cdb.txt"
+
 # Progress (issue 10): on a terminal (script(1) gives the command a pty), a stage running over 2 s
 # shows a live line with the stage; a quick command shows none.
 if command -v script >/dev/null; then

@@ -1,0 +1,53 @@
+// Campaigns (SPEC §7, issue 11): billiards runs over many n as work units (n, seed), run on
+// threads, each finished unit recorded in the results database at once (store/), so rerunning
+// the same request skips every unit already recorded and an interrupted campaign loses at most
+// the units under way.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/scene.hpp"
+#include "store/results_db.hpp"
+
+namespace tripack::campaign {
+
+struct CampaignRequest {
+  long long n_first = 0, n_last = 0;  // every n in [n_first, n_last] with n >= 2
+  int runs = 20;                      // seeds seed .. seed + runs - 1 for each n
+  std::uint64_t seed = 1;
+  int threads = 1;
+  std::string db;              // the results database file
+  std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
+  std::string tool_version;
+};
+
+struct CampaignProgress {
+  long long done = 0, total = 0;  // units finished in this call, units it has to do
+  long long skipped = 0;          // already in the database
+  long long n = 0;                // the unit just finished
+  long double d = 0;              // its certified d (0 when not certified)
+  double elapsed = 0;
+};
+
+struct CampaignResult {
+  long long units = 0;     // in the request
+  long long skipped = 0;   // already recorded before this call
+  long long recorded = 0;  // finished and recorded now
+  long long certified = 0;
+  long long errors = 0;  // units that ended with an error (recorded with it)
+  bool cancelled = false;
+  std::vector<store::StoredPacking> best;  // the database's best of every n in the range
+  double seconds = 0;
+};
+
+// Throws std::invalid_argument for a range without n >= 2, runs < 1, threads < 1, a scene with
+// initial points; store::StoreError for the database (before any run starts).
+CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bool>* cancel,
+                            const std::function<void(const CampaignProgress&)>& progress);
+
+}  // namespace tripack::campaign
