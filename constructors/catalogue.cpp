@@ -160,6 +160,10 @@ ExpressionEnv<long double> real_env(long k, long p) {
   env.function = [](std::string_view name,
                     std::span<const long double> a) -> std::optional<long double> {
     if (a.size() != 1) return std::nullopt;
+    // A chain length the solver can take (fuzzing: ripple(1e300) overflowed the cast,
+    // ripple(100000000) asked for 3.2 GB; the catalogue needs k up to thousands).
+    if (!(a[0] >= 0 && a[0] <= 100000) || a[0] != std::floor(a[0]))
+      throw ExpressionError("ripple/sparse chain length must be an integer in [0, 100000]");
     const int q = static_cast<int>(a[0]);
     if (name == "ripple") return solve_ripple_chain(q, 2).L;
     if (name == "sparse") return solve_ripple_chain(q, 1).L;

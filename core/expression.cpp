@@ -20,6 +20,9 @@ class ExpressionParser {
   Expression& e_;
   const std::string& s_;
   std::size_t pos_ = 0;
+  int depth_ = 0;  // nesting of unary(): every recursion passes through it
+  // Deeper formulas are refused: 3000 '(' overflowed the stack of this recursive descent.
+  static constexpr int kMaxDepth = 200;
 
   [[noreturn]] void fail(const std::string& what) const {
     throw ExpressionError("cannot parse '" + s_ + "' at position " + std::to_string(pos_) + ": " +
@@ -63,6 +66,11 @@ class ExpressionParser {
     }
   }
   int unary() {
+    struct Nesting {
+      int& depth;
+      ~Nesting() { --depth; }
+    } nesting{++depth_};
+    if (depth_ > kMaxDepth) fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
     if (eat('-')) return push(Kind::Negate, "", {unary()});
     if (eat('+')) return unary();
     return power();

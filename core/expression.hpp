@@ -63,6 +63,24 @@ template <class T>
 T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
   const Node& nd = nodes_[static_cast<std::size_t>(id)];
   auto arg = [&](std::size_t i) { return eval_node<T>(nd.args[i], env); };
+  // Integer formulas are checked: an overflow is an error, not undefined behaviour (fuzzing
+  // found 33^22 and 9999999999*9999999999 in catalogue formulas).
+  auto overflow = [&] { throw ExpressionError("'" + text_ + "': integer overflow"); };
+  auto add = [&](auto a, auto b) {
+    T r{};
+    if (__builtin_add_overflow(a, b, &r)) overflow();
+    return r;
+  };
+  auto sub = [&](auto a, auto b) {
+    T r{};
+    if (__builtin_sub_overflow(a, b, &r)) overflow();
+    return r;
+  };
+  auto mul = [&](auto a, auto b) {
+    T r{};
+    if (__builtin_mul_overflow(a, b, &r)) overflow();
+    return r;
+  };
   switch (nd.kind) {
     case Kind::Number:
       if constexpr (std::is_integral_v<T>) {
@@ -78,13 +96,29 @@ T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
       throw ExpressionError("'" + text_ + "': unknown variable '" + nd.name + "'");
     }
     case Kind::Negate:
-      return -arg(0);
+      if constexpr (std::is_integral_v<T>) {
+        return sub(T(0), arg(0));
+      } else {
+        return -arg(0);
+      }
     case Kind::Add:
-      return arg(0) + arg(1);
+      if constexpr (std::is_integral_v<T>) {
+        return add(arg(0), arg(1));
+      } else {
+        return arg(0) + arg(1);
+      }
     case Kind::Sub:
-      return arg(0) - arg(1);
+      if constexpr (std::is_integral_v<T>) {
+        return sub(arg(0), arg(1));
+      } else {
+        return arg(0) - arg(1);
+      }
     case Kind::Mul:
-      return arg(0) * arg(1);
+      if constexpr (std::is_integral_v<T>) {
+        return mul(arg(0), arg(1));
+      } else {
+        return arg(0) * arg(1);
+      }
     case Kind::Div: {
       const T a = arg(0), b = arg(1);
       if constexpr (std::is_integral_v<T>) {
@@ -97,8 +131,12 @@ T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
       const T a = arg(0), b = arg(1);
       if constexpr (std::is_integral_v<T>) {
         if (b < 0) throw ExpressionError("'" + text_ + "': negative integer power");
-        T r = 1;
-        for (T i = 0; i < b; ++i) r *= a;
+        // Square and multiply: log2(b) checked steps (a loop of b steps hung on 1^999999999999).
+        T r = 1, base = a;
+        for (T e = b; e > 0; e /= 2) {
+          if (e % 2 == 1) r = mul(r, base);
+          if (e > 1) base = mul(base, base);
+        }
         return r;
       } else {
         using std::pow;
@@ -108,7 +146,13 @@ T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
     case Kind::Call: {
       std::vector<T> values;
       for (std::size_t i = 0; i < nd.args.size(); ++i) values.push_back(arg(i));
-      if (nd.name == "Delta" && values.size() == 1) return values[0] * (values[0] + 1) / 2;
+      if (nd.name == "Delta" && values.size() == 1) {
+        if constexpr (std::is_integral_v<T>) {
+          return mul(values[0], add(values[0], T(1))) / 2;
+        } else {
+          return values[0] * (values[0] + 1) / 2;
+        }
+      }
       if (nd.name == "sqrt" && values.size() == 1) {
         if constexpr (std::is_integral_v<T>) {
           throw ExpressionError("'" + text_ + "': sqrt in an integer formula");

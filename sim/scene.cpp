@@ -85,11 +85,16 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
         if (!p.IsSequence() || p.size() != 2) fail("initial.points must be a list of [x, y]");
         s.points.push_back({scalar<long double>(p[0], "a point coordinate"),
                             scalar<long double>(p[1], "a point coordinate")});
+        // (.nan and .inf are valid YAML numbers; found by fuzzing, they reached the
+        // neighbour grid's integer cast.)
+        if (!std::isfinite(s.points.back().x) || !std::isfinite(s.points.back().y))
+          fail("initial.points must be finite numbers");
       }
     } else if (file.empty()) {
       fail("initial needs file or points");
     }
     if (node["d"]) d = scalar<long double>(node["d"], "initial.d");
+    if (d && !std::isfinite(*d)) fail("initial.d must be a finite number");
   }
   if (!file.empty()) {
     std::filesystem::path path(file);

@@ -321,6 +321,15 @@ effects:
   EXPECT_NO_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}, thermostat: {}}"));
   // Growth without a thermostat never reaches the stop gap (measured): refused in a YAML scene.
   EXPECT_THROW(parse_scene("n: 5\neffects: {growth: {rate: 0.01}}"), std::runtime_error);
+  // Fuzz finding (fuzz/findings/fuzz_scene): non-finite inline start points are one-line errors.
+  for (const char* bad : {"[[0.4, .nan], [0.3, 0.1]]", "[[0.4, .inf], [0.3, 0.1]]"}) {
+    try {
+      parse_scene(std::string("initial: {points: ") + bad + "}");
+      ADD_FAILURE() << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("finite"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Billiards, SceneParsesScheduleShakeAndPattern) {

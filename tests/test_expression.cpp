@@ -1,6 +1,7 @@
 // core/expression: the catalogue's formula language.
 #include <gtest/gtest.h>
 
+#include "constructors/catalogue.hpp"
 #include "core/expression.hpp"
 
 namespace tripack {
@@ -58,6 +59,39 @@ TEST(Expression, ErrorsAreReported) {
   EXPECT_THROW(Expression::parse("foo(1)").eval<long double>({}),
                ExpressionError);  // unknown function
   EXPECT_EQ(Expression::parse("k*p+k").variables(), (std::vector<std::string>{"k", "p"}));
+}
+
+}  // namespace
+}  // namespace tripack
+
+namespace tripack {
+namespace {
+
+// Findings of the fuzzers (fuzz/findings/fuzz_formula): each is now a one-line ExpressionError.
+TEST(Expression, FuzzFindingsAreErrorsNotCrashes) {
+  auto error_of = [](const std::string& formula) -> std::string {
+    try {
+      Expression::parse(formula).eval<long long>({});
+    } catch (const ExpressionError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(error_of("33^22").find("integer overflow"), std::string::npos);
+  EXPECT_NE(error_of("9999999999*9999999999").find("integer overflow"), std::string::npos);
+  EXPECT_NE(error_of("9223372036854775807+1").find("integer overflow"), std::string::npos);
+  EXPECT_NE(error_of("Delta(4294967296)").find("integer overflow"), std::string::npos);
+  // 1^(10^12) and 2^62 by square and multiply: exact, at once.
+  EXPECT_EQ(Expression::parse("1^999999999999").eval<long long>({}), 1);
+  EXPECT_EQ(Expression::parse("2^62").eval<long long>({}), 4611686018427387904LL);
+  EXPECT_EQ(Expression::parse("(-3)^5").eval<long long>({}), -243);
+  EXPECT_NE(error_of("2^63").find("integer overflow"), std::string::npos);
+  EXPECT_THROW(Expression::parse(std::string(3000, '(') + "1"), ExpressionError);
+  EXPECT_EQ(
+      Expression::parse(std::string(50, '(') + "1" + std::string(50, ')')).eval<long long>({}), 1);
+  // ripple(q) needs an integer chain length the solver can take.
+  for (const char* bad : {"ripple(1e300)", "ripple(100000000)", "ripple(-1)", "ripple(2.5)"})
+    EXPECT_THROW(Expression::parse(bad).eval<long double>(real_env(1, 0)), ExpressionError) << bad;
 }
 
 }  // namespace
