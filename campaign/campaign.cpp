@@ -77,7 +77,7 @@ CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bo
   const auto start = std::chrono::steady_clock::now();
   store::ResultsDb db = store::ResultsDb::open(request.db);
   CampaignResult result;
-  std::vector<Unit> todo;
+  std::vector<Unit> pending;
   for (long long n = std::max(request.n_first, 2LL); n <= request.n_last; ++n)
     for (int r = 0; r < request.runs; ++r) {
       const Unit unit{n, request.seed + static_cast<std::uint64_t>(r)};
@@ -85,7 +85,7 @@ CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bo
       if (db.has_run(unit.n, unit.seed))
         ++result.skipped;
       else
-        todo.push_back(unit);
+        pending.push_back(unit);
     }
   std::mutex writer;  // one connection, one writer: units are recorded one at a time
   std::size_t next = 0;
@@ -95,8 +95,8 @@ CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bo
       Unit unit{};
       {
         std::lock_guard<std::mutex> lock(writer);
-        if (next == todo.size() || !failure.empty() || (cancel && *cancel)) return;
-        unit = todo[next++];
+        if (next == pending.size() || !failure.empty() || (cancel && *cancel)) return;
+        unit = pending[next++];
       }
       const store::RunRecord record = run_unit(request, unit);
       std::lock_guard<std::mutex> lock(writer);
@@ -112,7 +112,7 @@ CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bo
       if (progress) {
         CampaignProgress p;
         p.done = result.recorded;
-        p.total = static_cast<long long>(todo.size());
+        p.total = static_cast<long long>(pending.size());
         p.skipped = result.skipped;
         p.n = unit.n;
         p.d = record.packing ? std::stold(record.packing->d) : 0.0L;
@@ -126,7 +126,7 @@ CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bo
   worker();
   for (auto& t : pool) t.join();
   if (!failure.empty()) throw store::StoreError(failure);
-  result.cancelled = result.recorded < static_cast<long long>(todo.size());
+  result.cancelled = result.recorded < static_cast<long long>(pending.size());
   for (auto& best : db.best_per_n())
     if (best.n >= request.n_first && best.n <= request.n_last) result.best.push_back(best);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
