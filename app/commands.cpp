@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
@@ -447,18 +448,35 @@ int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
   const bool tty = isatty(fileno(stderr));
   explore_cancel = false;
   std::signal(SIGINT, on_interrupt);
-  const auto result =
-      campaign::run_campaign(request, &explore_cancel, [tty](const campaign::CampaignProgress& p) {
+  std::signal(SIGTERM, on_interrupt);       // mpirun passes a Ctrl-C on to the ranks as SIGTERM
+  std::map<long long, long double> best_d;  // best certified d per n found in this call
+  const auto result = campaign::run_campaign(
+      request, &explore_cancel, [tty, &best_d](const campaign::CampaignProgress& p) {
+        if (p.d > 0 && p.d > best_d[p.n]) best_d[p.n] = p.d;
         const double eta = p.done > 0 ? p.elapsed / static_cast<double>(p.done) *
                                             static_cast<double>(p.total - p.done)
                                       : 0.0;
-        const std::string line =
-            fmt::format("campaign: {}/{} units ({} already recorded), last n = {}{}, ETA {:.0f} s",
-                        p.done, p.total, p.skipped, p.n,
-                        p.d > 0 ? fmt::format(" d = {:.15Lg}", p.d) : " not certified", eta);
-        if (tty) std::cerr << "\r" << line << "     " << std::flush;
+        const auto best = best_d.find(p.n);
+        if (tty) {
+          std::cerr << fmt::format(
+                           "\rcampaign: {}/{} units ({} already recorded), n = {}: best d {}, ETA "
+                           "{:.0f} s     ",
+                           p.done, p.total, p.skipped, p.n,
+                           best != best_d.end() ? fmt::format("{:.15Lg}", best->second)
+                                                : "none yet",
+                           eta)
+                    << std::flush;
+        } else {
+          // A log line per recorded unit: what a batch job (or the soak test) can check against
+          // the database after a kill.
+          std::cerr << fmt::format("campaign: recorded n = {} seed = {}: {}\n", p.n, p.seed,
+                                   p.d > 0 ? fmt::format("d = {:.15Lg}", p.d) : "not certified")
+                    << std::flush;
+        }
       });
   std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
   if (tty) std::cerr << "\n";
   std::cout << fmt::format(
       "campaign {}..{} x {} runs: {} units, {} already in {}, {} recorded now ({} certified, {} "

@@ -149,12 +149,15 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
 Action add_campaign(CLI::App& cli, const GlobalOptions& g, CampaignOptions& o) {
   auto* c = cli.add_subcommand(
       "campaign",
-      "Billiards runs over a range of n as work units (n, seed) on threads; every finished unit "
-      "goes to an SQLite database at once, and rerunning continues where it stopped");
+      "Billiards runs over a range of n as work units (n, seed) on threads, or on MPI ranks when "
+      "started by mpirun (rank 0 hands out units and writes); every finished unit goes to an "
+      "SQLite database at once, and rerunning continues where it stopped");
   c->add_option("--n", o.n_range, "A..B or N")->required();
   c->add_option("--runs", o.runs, "seeds per n (default 20)")->check(CLI::Range(1, 1000000));
   c->add_option("--seed", o.seed, "first seed (default 1)");
-  c->add_option("--threads", o.threads, "parallel units (default 1)")->check(CLI::Range(1, 256));
+  c->add_option("--threads", o.threads,
+                "parallel units (default 1); under mpirun, rank 0's own (0: it only hands out)")
+      ->check(CLI::Range(0, 256));
   c->add_option("--db", o.db, "results database (default tripack.db)");
   c->add_option("--scene", o.scene, "scene YAML (effects, stop rule) for every n");
   return [c, &g, &o] { return *c ? cmd_campaign(g, o) : -1; };

@@ -1,7 +1,7 @@
 // Campaigns (SPEC §7, issue 11): billiards runs over many n as work units (n, seed), run on
-// threads, each finished unit recorded in the results database at once (store/), so rerunning
-// the same request skips every unit already recorded and an interrupted campaign loses at most
-// the units under way.
+// threads or, when the program was started by mpirun, on MPI ranks (campaign/ranks.hpp), each
+// finished unit recorded in the results database at once (store/), so rerunning the same request
+// skips every unit already recorded and an interrupted campaign loses at most the units under way.
 #pragma once
 
 #include <atomic>
@@ -20,8 +20,8 @@ struct CampaignRequest {
   long long n_first = 0, n_last = 0;  // every n in [n_first, n_last] with n >= 2
   int runs = 20;                      // seeds seed .. seed + runs - 1 for each n
   std::uint64_t seed = 1;
-  int threads = 1;
-  std::string db;              // the results database file
+  int threads = 1;  // under mpirun: rank 0's own worker threads (0: it only hands out and writes)
+  std::string db;   // the results database file
   std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
   std::string tool_version;
 };
@@ -30,7 +30,8 @@ struct CampaignProgress {
   long long done = 0, total = 0;  // units finished in this call, units it has to do
   long long skipped = 0;          // already in the database
   long long n = 0;                // the unit just finished
-  long double d = 0;              // its certified d (0 when not certified)
+  std::uint64_t seed = 0;
+  long double d = 0;  // its certified d (0 when not certified)
   double elapsed = 0;
 };
 
@@ -43,10 +44,15 @@ struct CampaignResult {
   bool cancelled = false;
   std::vector<store::StoredPacking> best;  // the database's best of every n in the range
   double seconds = 0;
+  int ranks = 1;  // MPI ranks of the launch (1: threads only)
+  int rank = 0;   // this process's rank: only rank 0's result has counts and the best packings
 };
 
-// Throws std::invalid_argument for a range without n >= 2, runs < 1, threads < 1, a scene with
-// initial points; store::StoreError for the database (before any run starts).
+// Throws std::invalid_argument for a range without n >= 2, runs < 1, threads < 1 (< 0 under
+// mpirun), a scene with initial points; store::StoreError for the database (before any run
+// starts, or after the units under way when a write fails: what was recorded stays); under
+// mpirun, std::runtime_error when built without MPI. Rank 0 is the only process that opens the
+// database.
 CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bool>* cancel,
                             const std::function<void(const CampaignProgress&)>& progress);
 

@@ -16,6 +16,7 @@ PKGS=(
   nlohmann-json3-dev   # JSON output and input
   libcairo2-dev        # packing diagrams (SVG, PNG, PDF) drawn like the paper's figures
   libsqlite3-dev       # the campaign results database (WAL: a killed campaign keeps every finished unit)
+  sqlite3              # an independent reader of that database in the soak and MPI tests
   libopenmpi-dev openmpi-bin  # campaigns beyond one machine: mpirun -np P tripack campaign ...
   clang libclang-rt-14-dev    # libFuzzer + ASan/UBSan for scripts/fuzz.sh (CI runs a smoke)
   fonts-dejavu-core    # the diagrams' font, named explicitly so labels look the same everywhere

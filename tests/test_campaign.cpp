@@ -8,6 +8,7 @@
 #include <string>
 
 #include "campaign/campaign.hpp"
+#include "campaign/work_unit.hpp"
 #include "pipeline/billiards_search.hpp"
 
 namespace tripack::campaign {
@@ -72,6 +73,51 @@ TEST(Campaign, AnInterruptedCampaignResumesWithoutRepeats) {
   EXPECT_EQ(db.run_count(), 10);
   EXPECT_EQ(db.finished_seeds(8), (std::vector<std::uint64_t>{1, 2, 3, 4, 5}));
   EXPECT_EQ(db.integrity_check(), "ok");
+}
+
+// A worker rank's run reaches rank 0 digit for digit: the stored packing is the one it found.
+TEST(Campaign, ARunRecordCrossesRanksExactly) {
+  store::RunRecord run;
+  run.n = 3;
+  run.seed = 18446744073709551615ULL;  // the largest seed survives the trip
+  run.outcome = "certified";
+  run.events = 1234;
+  run.seconds = 0.125;
+  run.tool_version = "tripack test";
+  store::StoredPacking p;
+  p.n = 3;
+  p.d = "1";
+  p.graph_hash = "0123456789abcdef";
+  // Long doubles that a 17-digit double would round: the trip must keep all 64 bits.
+  p.points = {Vec2L{0.0L, 0.0L}, Vec2L{1.0L, 0.0L},
+              Vec2L{0.5L, 0.866025403784438646763723170752936183L}};
+  p.points.push_back(Vec2L{1.0L / 3.0L, std::nextafter(0.1L, 1.0L)});
+  p.bonds = {Bond::pair(0, 1), Bond::wall(2, Side::Bottom)};
+  p.rattlers = {3};
+  p.certified = true;
+  p.first_seed = run.seed;
+  p.tool_version = run.tool_version;
+  run.packing = p;
+  const store::RunRecord back = decode_run(encode_run(run));
+  EXPECT_EQ(back.n, run.n);
+  EXPECT_EQ(back.seed, run.seed);
+  EXPECT_EQ(back.outcome, run.outcome);
+  EXPECT_EQ(back.events, run.events);
+  EXPECT_EQ(back.seconds, run.seconds);
+  ASSERT_TRUE(back.packing.has_value());
+  ASSERT_EQ(back.packing->points.size(), p.points.size());
+  for (std::size_t i = 0; i < p.points.size(); ++i) {
+    EXPECT_EQ(back.packing->points[i].x, p.points[i].x) << i;
+    EXPECT_EQ(back.packing->points[i].y, p.points[i].y) << i;
+  }
+  ASSERT_EQ(back.packing->bonds.size(), 2u);
+  EXPECT_EQ(back.packing->bonds[1].b, p.bonds[1].b);
+  EXPECT_EQ(back.packing->rattlers, p.rattlers);
+  EXPECT_EQ(back.packing->graph_hash, p.graph_hash);
+  run.packing.reset();
+  EXPECT_FALSE(decode_run(encode_run(run)).packing.has_value());
+  EXPECT_THROW(decode_run("{\"n\": 3}"), std::runtime_error);
+  EXPECT_THROW(decode_run("not json"), std::runtime_error);
 }
 
 TEST(Campaign, RefusesARangeWithoutValidN) {

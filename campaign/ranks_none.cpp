@@ -1,0 +1,40 @@
+// Built without MPI: a campaign runs on threads only; a launch by mpirun is refused (each rank
+// would otherwise run the whole campaign on the same database).
+#include <stdexcept>
+
+#include "campaign/ranks.hpp"
+#include "campaign/ranks_env.hpp"
+
+namespace tripack::campaign {
+
+struct RankLink::State {};
+
+int launched_ranks() {
+  return ranks_from_environment();
+}
+bool built_with_mpi() {
+  return false;
+}
+
+RankLink::RankLink() {
+  throw std::runtime_error(
+      "this tripack was built without MPI (install libopenmpi-dev and rebuild), so it cannot run "
+      "a campaign under mpirun");
+}
+RankLink::~RankLink() = default;
+int RankLink::rank() const {
+  return 0;
+}
+int RankLink::size() const {
+  return 1;
+}
+std::optional<RankLink::Report> RankLink::poll_report() {
+  return std::nullopt;
+}
+void RankLink::send_unit(int, const WorkUnit&) {}
+void RankLink::send_stop(int) {}
+std::optional<WorkUnit> RankLink::report_and_wait(const std::string&) {
+  return std::nullopt;
+}
+
+}  // namespace tripack::campaign
