@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -18,6 +19,8 @@
 #include <thread>
 
 #include "campaign/campaign.hpp"
+#include "campaign/import.hpp"
+#include "campaign/stored.hpp"
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"
@@ -28,6 +31,7 @@
 #include "pipeline/timing.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
+#include "report/fields.hpp"
 #include "report/packing_file.hpp"
 #include "report/plot.hpp"
 
@@ -419,21 +423,6 @@ int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
   return 0;
 }
 
-namespace {
-
-// One line per n: n, d with every stored digit, the label (the best of n is rank a), the runs
-// that ended in it, its first seed and whether it is certified.
-void print_best(const std::vector<store::StoredPacking>& best) {
-  std::cout << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}\n", "n", "d", "label", "runs",
-                           "first seed");
-  for (const auto& p : best)
-    std::cout << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}\n", p.n, p.d,
-                             fmt::format("t{}{}", p.n, pipeline::rank_letters(0)), p.runs,
-                             p.first_seed);
-}
-
-}  // namespace
-
 int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
   const auto [first, last] = parse_range(o.n_range);
   campaign::CampaignRequest request;
@@ -478,21 +467,126 @@ int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
   std::signal(SIGTERM, SIG_DFL);
   if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
   if (tty) std::cerr << "\n";
-  std::cout << fmt::format(
-      "campaign {}..{} x {} runs: {} units, {} already in {}, {} recorded now ({} certified, {} "
-      "errors){}, {:.1f} s\n",
-      first, last, o.runs, result.units, result.skipped, o.db, result.recorded, result.certified,
-      result.errors, result.cancelled ? ", interrupted (rerun to continue)" : "", result.seconds);
-  print_best(result.best);
+  // The database's best of every n in the range, labelled like `db best`.
+  const report::CampaignReport report{first, last,   o.runs,
+                                      o.db,  result, campaign::best_table(o.db, first, last)};
+  print_result(report, o.out);
   return result.cancelled ? 130 : 0;
 }
 
 int cmd_db_best(const DbOptions& o) {
-  if (!std::filesystem::exists(o.db)) throw std::invalid_argument("no database " + o.db);
-  const store::ResultsDb db = store::ResultsDb::open(o.db);
-  std::vector<store::StoredPacking> best = db.best_per_n();
-  if (o.n) std::erase_if(best, [&](const auto& p) { return p.n != o.n; });
-  print_best(best);
+  const auto table = o.n ? campaign::best_table(o.db, o.n, o.n)
+                         : campaign::best_table(o.db, 0, std::numeric_limits<long long>::max());
+  if (o.n && table.rows.empty())
+    throw std::invalid_argument(fmt::format("no packings of n = {} in {}", o.n, o.db));
+  print_result(table, o.out);
+  return 0;
+}
+
+int cmd_db_check(const DbCheckOptions& o) {
+  const campaign::DbCheck check = campaign::check_database(o.db);
+  if (check.stats.integrity != "ok")
+    throw std::runtime_error("database " + o.db +
+                             " fails the integrity check: " + check.stats.integrity);
+  print_result(check, o.out);
+  if (check.duplicates() > 0) {
+    // The result is printed (one JSON object with --json); the failure is one line on stderr.
+    std::cerr << fmt::format(
+        "tripack: error: database {} holds duplicates: {} runs with a repeated (n, seed), {} "
+        "packings with a repeated (n, contact graph, d to 12 digits)\n",
+        o.db, check.stats.duplicate_runs, check.stats.duplicate_packings);
+    return 1;
+  }
+  return 0;
+}
+
+namespace {
+
+Convention convention_option(const std::string& name) {
+  const auto c = parse_convention(name);
+  if (!c)
+    throw std::invalid_argument("unknown convention '" + name +
+                                "' (unit-triangle, radius, unit-disk-side)");
+  return *c;
+}
+
+// The format of a known extension (.txt, .csv, .json, .pck, .records), if the path has one.
+std::optional<FileFormat> format_of_extension(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".txt" || ext == ".csv" || ext == ".json" || ext == ".pck" || ext == ".records")
+    return format_from_path(path);
+  return std::nullopt;
+}
+
+}  // namespace
+
+int cmd_db_export(const DbExportOptions& o) {
+  // Everything the command line decides is checked before the database is read.
+  std::optional<FileFormat> format;
+  if (!o.format.empty()) {
+    format = report::parse_file_format(o.format);
+    if (!format)
+      throw std::invalid_argument("--format must be txt, csv, json or records, not '" + o.format +
+                                  "'");
+  }
+  const Convention convention = convention_option(o.convention);
+  const bool into_directory =
+      !o.output.empty() && (o.all || std::filesystem::is_directory(o.output));
+  if (!o.output.empty() && !into_directory) {
+    const auto named = format_of_extension(o.output);
+    if (format && named && *format != *named)
+      throw std::invalid_argument("-o " + o.output + " names another format than --format " +
+                                  o.format);
+    if (!format) format = named;
+  }
+  const FileFormat chosen = format.value_or(FileFormat::Text);
+  const auto selected = campaign::select_packings(o.db, o.n, o.rank, o.all);
+  auto write_options = [&](const campaign::RankedPacking& r) {
+    WriteOptions w;
+    w.convention = convention;
+    w.digits = o.digits;
+    w.d_digits = std::min(o.digits, 18);  // d is stored with 18 significant digits
+    w.label = r.label;
+    return w;
+  };
+  if (o.output.empty()) {
+    // Rendered whole before printing. Several packings follow one another (JSON: an array).
+    std::ostringstream buffer;
+    const bool array = chosen == FileFormat::Json && selected.size() > 1;
+    if (array) buffer << "[\n";
+    for (std::size_t i = 0; i < selected.size(); ++i) {
+      if (i > 0) buffer << (array ? ",\n" : "\n");
+      report::write_packing(buffer, campaign::pattern_of(selected[i].packing), chosen,
+                            write_options(selected[i]));
+    }
+    if (array) buffer << "]\n";
+    std::cout << buffer.str() << std::flush;
+    return 0;
+  }
+  const auto dir = into_directory ? writable_directory(o.output) : std::filesystem::path();
+  for (const auto& r : selected) {
+    const std::filesystem::path path = into_directory
+                                           ? dir / (r.label + report::file_extension(chosen))
+                                           : std::filesystem::path(o.output);
+    std::ostringstream bytes;
+    report::write_packing(bytes, campaign::pattern_of(r.packing), chosen, write_options(r));
+    report::write_file(path, bytes.str());
+    std::cout << path.string() << "\n";
+  }
+  return 0;
+}
+
+int cmd_db_import(const DbImportOptions& o) {
+  campaign::ImportRequest request;
+  request.files = o.files;
+  request.db = o.db;
+  if (!o.convention.empty()) request.convention = convention_option(o.convention);
+  request.tool_version = "tripack " TRIPACK_VERSION;
+  const auto result = campaign::import_packings(request);
+  for (const auto& x : result.packings)
+    for (const auto& warning : x.warnings)
+      std::cerr << "tripack: warning: " << x.file << ": " << warning << "\n";
+  print_result(result, o.out);
   return 0;
 }
 

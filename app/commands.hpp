@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "report/render.hpp"
 
@@ -96,7 +97,7 @@ struct DrawOptions {
 };
 int cmd_draw(const GlobalOptions& g, const DrawOptions& o);
 
-// `tripack campaign` and `tripack db best` (issue 11, first part: threads, no MPI yet).
+// `tripack campaign` and `tripack db best|check|export|import` (issue 11).
 struct CampaignOptions {
   std::string n_range;  // "A..B" or "N"
   int runs = 20;
@@ -104,13 +105,39 @@ struct CampaignOptions {
   int threads = 1;
   std::string db = "tripack.db";
   std::string scene;  // YAML: effects and stop rule for every n
+  OutputOptions out;
 };
 int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o);
+// The read commands (best, check, export) never create the database file.
 struct DbOptions {
   std::string db = "tripack.db";
   long long n = 0;  // 0: every n
+  OutputOptions out;
 };
 int cmd_db_best(const DbOptions& o);
+struct DbCheckOptions {
+  std::string db = "tripack.db";
+  OutputOptions out;
+};
+int cmd_db_check(const DbCheckOptions& o);
+struct DbExportOptions {
+  std::string db = "tripack.db";
+  long long n = 0;
+  std::string format;  // txt, csv, json, records; empty: -o FILE's extension, else txt
+  std::string convention = "unit-triangle";
+  long long rank = 1;  // 1 = the best
+  bool all = false;
+  std::string output;  // -o FILE (one packing) or DIR (--all, or an existing directory)
+  int digits = 21;     // of the coordinates; d, L, r, S get at most the 18 stored
+};
+int cmd_db_export(const DbExportOptions& o);
+struct DbImportOptions {
+  std::vector<std::string> files;
+  std::string db = "tripack.db";
+  std::string convention;  // empty: as each file declares (analyze's rule)
+  OutputOptions out;
+};
+int cmd_db_import(const DbImportOptions& o);
 
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o);
 

@@ -160,16 +160,75 @@ Action add_campaign(CLI::App& cli, const GlobalOptions& g, CampaignOptions& o) {
       ->check(CLI::Range(0, 256));
   c->add_option("--db", o.db, "results database (default tripack.db)");
   c->add_option("--scene", o.scene, "scene YAML (effects, stop rule) for every n");
+  add_output_flags(c, o.out, true);
   return [c, &g, &o] { return *c ? cmd_campaign(g, o) : -1; };
 }
 
-Action add_db(CLI::App& cli, DbOptions& o) {
-  auto* c = cli.add_subcommand("db", "Read a campaign database");
+// The database commands' options.
+struct DbCommandOptions {
+  DbOptions best;
+  DbCheckOptions check;
+  DbExportOptions exp;
+  DbImportOptions imp;
+};
+
+Action add_db(CLI::App& cli, DbCommandOptions& o) {
+  auto* c = cli.add_subcommand("db", "Read, check, export and import a campaign database");
   c->require_subcommand(1);
+  const char* db_help = "results database (default tripack.db)";
+  const char* conventions =
+      "unit-triangle (centres in the side-1 triangle), radius (circles of radius r in a side-1 "
+      "triangle) or unit-disk-side (unit circles in a triangle of side S)";
+
   auto* best = c->add_subcommand("best", "One line per n: n, the best certified d, its label");
-  best->add_option("N", o.n, "only this n")->check(CLI::Range(2LL, 100000000LL));
-  best->add_option("--db", o.db, "results database (default tripack.db)");
-  return [best, &o] { return *best ? cmd_db_best(o) : -1; };
+  best->add_option("N", o.best.n, "only this n")->check(CLI::Range(2LL, 100000000LL));
+  best->add_option("--db", o.best.db, db_help);
+  add_output_flags(best, o.best.out, true);
+
+  auto* check = c->add_subcommand(
+      "check",
+      "Integrity check and counts: runs, values of n, packings, duplicates (exit 1 if "
+      "the check fails or there are duplicates)");
+  check->add_option("--db", o.check.db, db_help);
+  add_output_flags(check, o.check.out);
+
+  auto* exp = c->add_subcommand(
+      "export", "The stored packings of N as coordinate files (best first: rank 1 is tNa)");
+  exp->add_option("N", o.exp.n, "number of disks")->required()->check(CLI::Range(2LL, 100000000LL));
+  exp->add_option("--db", o.exp.db, db_help);
+  exp->add_option("--format", o.exp.format,
+                  "txt (x y; x y r in the radius convention), csv, json or records (i x y with "
+                  "d, r, S in the header); default: -o's extension, else txt");
+  exp->add_option("--convention", o.exp.convention, conventions);
+  auto* rank = exp->add_option("--rank", o.exp.rank, "which packing: 1 = the best (default)")
+                   ->check(CLI::Range(1LL, 1000000000LL));
+  auto* all = exp->add_flag("--all", o.exp.all, "every stored packing of N");
+  rank->excludes(all);
+  exp->add_option("-o,--output", o.exp.output,
+                  "a file (one packing) or a directory (--all: one file per packing, named by "
+                  "its label); default: stdout");
+  exp->add_option("--digits", o.exp.digits,
+                  "significant digits of the coordinates (the database keeps 21; d keeps 18)")
+      ->check(CLI::Range(1, 21));
+
+  auto* imp = c->add_subcommand(
+      "import",
+      "Read packing files (any layout of 'analyze'), certify them like 'analyze' and store them; "
+      "a file with overlapping disks or a packing that does not certify is refused and nothing "
+      "is stored");
+  imp->add_option("FILE", o.imp.files, "packing files")->required();
+  imp->add_option("--db", o.imp.db, "results database, created if missing (default tripack.db)");
+  imp->add_option("--convention", o.imp.convention,
+                  std::string(conventions) + "; default: as the file declares, else unit-triangle");
+  add_output_flags(imp, o.imp.out);
+
+  return [=, &o] {
+    if (*best) return cmd_db_best(o.best);
+    if (*check) return cmd_db_check(o.check);
+    if (*exp) return cmd_db_export(o.exp);
+    if (*imp) return cmd_db_import(o.imp);
+    return -1;
+  };
 }
 
 bool wants_json(int argc, char** argv) {
@@ -215,7 +274,7 @@ int main(int argc, char** argv) {
   ExploreOptions explore;
   DrawOptions draw;
   CampaignOptions campaign;
-  DbOptions db;
+  DbCommandOptions db;
   const std::vector<Action> actions{
       add_campaign(cli, g, campaign),
       add_db(cli, db),

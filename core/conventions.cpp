@@ -62,6 +62,24 @@ long double from_d(long double d, Convention c) {
   return d;
 }
 
+Vec2L point_in_convention(const Vec2L& p, long double d, Convention c) {
+  const long double side = container_side(d, c);
+  const Vec2L incentre = Vec2L{0.5L, kSqrt3 / 6} * side;
+  switch (c) {
+    case Convention::UnitTriangle:
+      return p;
+    case Convention::Radius:
+      return incentre + (p - Vec2L{0.5L, kSqrt3 / 6}) / (1 + kSqrt3 * d);
+    case Convention::UnitDiskSide:
+      return incentre + (p - Vec2L{0.5L, kSqrt3 / 6}) * (2 / d);
+  }
+  return p;
+}
+
+long double container_side(long double d, Convention c) {
+  return c == Convention::UnitDiskSide ? side_from_d(d) : 1.0L;
+}
+
 long double oler_bound(long long n) {
   return (-3.0L + std::sqrt(8.0L * static_cast<long double>(n) + 1.0L)) / 2.0L;
 }

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string_view>
 
+#include "core/geometry.hpp"
+
 namespace tripack {
 
 // How a number describing the packing size is meant:
@@ -24,6 +26,18 @@ long double d_from_side(long double s);
 // Convert a value given in convention c to d, and back.
 long double to_d(long double value, Convention c);
 long double from_d(long double d, Convention c);
+
+// A disk centre p of a packing with minimum distance d, given in the unit-triangle convention,
+// as the same disk's centre in convention c (SPEC §1). The centres' triangle is the container
+// shrunk by the disks' radius about its incentre:
+//  * unit-triangle: p itself;
+//  * radius: circles of radius r = radius_from_d(d) in the triangle (0,0) (1,0) (1/2, sqrt3/2);
+//    their centres' triangle has side 1 - 2 sqrt3 r = 1 / (1 + sqrt3 d);
+//  * unit-disk-side: circles of radius 1 in the triangle (0,0) (S,0) (S/2, S sqrt3/2) with
+//    S = side_from_d(d); their centres' triangle has side S - 2 sqrt3 = 2 / d.
+Vec2L point_in_convention(const Vec2L& p, long double d, Convention c);
+// The side of the container the points of convention c lie in: 1, or S for unit-disk-side.
+long double container_side(long double d, Convention c);
 
 // Oler's bound L(n) >= t(n) = (-3 + sqrt(8n + 1)) / 2, and delta(n) = L(n) - t(n).
 long double oler_bound(long long n);

@@ -33,8 +33,29 @@ std::string format_significant(long double value, int digits) {
 
 namespace {
 
-std::string coord(long double v) {
-  return format_significant(v, 21);
+// What the header of a file in convention c says about its container and circles.
+std::string convention_comment(Convention c, const std::string& r, const std::string& S) {
+  switch (c) {
+    case Convention::UnitTriangle:
+      return "unit-triangle (centres in the triangle (0,0) (1,0) (1/2,sqrt3/2))";
+    case Convention::Radius:
+      return "radius (centres of circles of radius r = " + r +
+             " in the triangle (0,0) (1,0) (1/2,sqrt3/2))";
+    case Convention::UnitDiskSide:
+      return "unit-disk-side (centres of circles of radius 1 in the triangle (0,0) (S,0) "
+             "(S/2,S sqrt3/2), S = " +
+             S + ")";
+  }
+  return "";
+}
+
+// The pattern's points in convention c.
+std::vector<Vec2L> points_in(const Pattern& pattern, Convention c) {
+  std::vector<Vec2L> pts;
+  pts.reserve(pattern.packing.size());
+  for (const auto& p : pattern.packing.points)
+    pts.push_back(point_in_convention(p, pattern.packing.d, c));
+  return pts;
 }
 
 std::vector<char> rattler_mask(const Pattern& p) {
@@ -45,12 +66,26 @@ std::vector<char> rattler_mask(const Pattern& p) {
 
 }  // namespace
 
-void write_text(std::ostream& out, const Pattern& pattern) {
+void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& options) {
   const auto& pk = pattern.packing;
   const auto& pv = pattern.provenance;
-  out << "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
+  const Convention c = options.convention;
+  auto text = [&](long double v) { return format_significant(v, options.digits); };
+  auto value = [&](long double v) { return format_significant(v, options.d_digits); };
+  const std::string r = value(radius_from_d(pk.d)), S = value(side_from_d(pk.d));
+  if (c == Convention::UnitTriangle) {
+    out << "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
+  } else {
+    out << "# tripack packing; d is the minimum distance of the centres scaled to the unit "
+           "triangle\n";
+    out << "# convention: " << convention_comment(c, r, S) << "\n";
+    out << "# layout: " << (c == Convention::Radius ? "x y r" : "x y") << "\n";
+  }
   out << "# n: " << pk.size() << "\n";
-  out << "# d: " << format_significant(pk.d, 21) << "\n";
+  if (!options.label.empty()) out << "# label: " << options.label << "\n";
+  out << "# d: " << value(pk.d) << "\n";
+  if (c == Convention::Radius) out << "# r: " << r << "\n";
+  if (c == Convention::UnitDiskSide) out << "# S: " << S << "\n";
   if (!pv.class_id.empty()) {
     out << "# class: " << pv.class_id << "\n# k: " << pv.k << "\n";
     if (pv.p) out << "# p: " << pv.p << "\n";
@@ -59,34 +94,53 @@ void write_text(std::ostream& out, const Pattern& pattern) {
   out << "# bonds: " << pattern.bonds.size() << "\n# rattlers:";
   for (int r : pattern.rattlers) out << ' ' << r;
   out << "\n";
-  for (const auto& p : pk.points) out << coord(p.x) << ' ' << coord(p.y) << "\n";
-}
-
-void write_csv(std::ostream& out, const Pattern& pattern) {
-  const auto mask = rattler_mask(pattern);
-  out << "index,x,y,rattler\n";
-  for (std::size_t i = 0; i < pattern.packing.size(); ++i) {
-    const auto& p = pattern.packing.points[i];
-    out << i << ',' << coord(p.x) << ',' << coord(p.y) << ',' << int(mask[i]) << "\n";
+  for (const auto& p : points_in(pattern, c)) {
+    out << text(p.x) << ' ' << text(p.y);
+    if (c == Convention::Radius) out << ' ' << r;
+    out << "\n";
   }
 }
 
-void write_json(std::ostream& out, const Pattern& pattern) {
+void write_csv(std::ostream& out, const Pattern& pattern, const WriteOptions& options) {
+  const auto mask = rattler_mask(pattern);
+  const Convention c = options.convention;
+  auto text = [&](long double v) { return format_significant(v, options.digits); };
+  auto value = [&](long double v) { return format_significant(v, options.d_digits); };
+  const long double d = pattern.packing.d;
+  if (c != Convention::UnitTriangle)
+    out << "# convention: " << convention_comment(c, value(radius_from_d(d)), value(side_from_d(d)))
+        << "\n";
+  if (!options.label.empty()) out << "# label: " << options.label << "\n";
+  out << "index,x,y,rattler\n";
+  const auto pts = points_in(pattern, c);
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    out << i << ',' << text(pts[i].x) << ',' << text(pts[i].y) << ',' << int(mask[i]) << "\n";
+}
+
+void write_json(std::ostream& out, const Pattern& pattern, const WriteOptions& options) {
   using nlohmann::json;
   const auto& pk = pattern.packing;
+  const Convention c = options.convention;
+  auto text = [&](long double v) { return format_significant(v, options.digits); };
+  auto value = [&](long double v) { return format_significant(v, options.d_digits); };
   json j;
-  j["convention"] = "unit-triangle";
+  j["convention"] = std::string(convention_name(c));
+  if (!options.label.empty()) j["label"] = options.label;
+  if (c != Convention::UnitTriangle) {
+    j["r"] = c == Convention::Radius ? value(radius_from_d(pk.d)) : std::string("1");
+    j["side"] = c == Convention::Radius ? std::string("1") : value(side_from_d(pk.d));
+  }
   j["n"] = pk.size();
-  j["d"] = format_significant(pk.d, 21);
-  j["L"] = format_significant(1.0L / pk.d, 21);
+  j["d"] = value(pk.d);
+  j["L"] = value(1.0L / pk.d);
   j["class"] = pattern.provenance.class_id;
   j["k"] = pattern.provenance.k;
   j["p"] = pattern.provenance.p;
   j["variant"] = pattern.provenance.variant;
   json pts = json::array(), exact = json::array();
-  for (const auto& p : pk.points) {
+  for (const auto& p : points_in(pattern, c)) {
     pts.push_back({static_cast<double>(p.x), static_cast<double>(p.y)});
-    exact.push_back({coord(p.x), coord(p.y)});
+    exact.push_back({text(p.x), text(p.y)});
   }
   j["points"] = std::move(pts);
   j["points_exact"] = std::move(exact);
@@ -102,7 +156,7 @@ void write_json(std::ostream& out, const Pattern& pattern) {
   out << j.dump(1) << "\n";
 }
 
-RecordsTable records_table(const Pattern& pattern, int digits) {
+RecordsTable records_table(const Pattern& pattern, int digits, Convention convention) {
   // 21 significant digits already round-trip a long double: more would print noise.
   digits = std::clamp(digits, 1, 21);
   auto text = [digits](long double v) { return format_significant(v, digits); };
@@ -121,17 +175,27 @@ RecordsTable records_table(const Pattern& pattern, int digits) {
   t.L = text(1 / pk.d);
   t.bonds = pattern.bonds.size();
   t.rattlers = pattern.rattlers;
-  for (const auto& p : pk.points) t.points.emplace_back(text(p.x), text(p.y));
+  t.convention = convention;
+  for (const auto& p : points_in(pattern, convention)) t.points.emplace_back(text(p.x), text(p.y));
   return t;
 }
 
 void write_records(std::ostream& out, const RecordsTable& table) {
-  out << "# tripack record table: n equal disks, centres in the unit triangle "
-         "(0,0) (1,0) (1/2,sqrt3/2)\n";
-  out << "# i is 0-based; d = minimum distance of the centres; r = radius of n circles in the\n";
+  if (table.convention == Convention::UnitTriangle) {
+    out << "# tripack record table: n equal disks, centres in the unit triangle "
+           "(0,0) (1,0) (1/2,sqrt3/2)\n";
+    out << "# i is 0-based; d = minimum distance of the centres; r = radius of n circles in the\n";
+  } else {
+    out << "# tripack record table: n equal disks, centres in the convention below\n";
+    out << "# i is 0-based; d = minimum distance of the centres scaled to the unit triangle; r = "
+           "radius of n circles in the\n";
+  }
   out << "# side-1 triangle; S = side of the smallest triangle holding n circles of radius 1; "
          "L = 1/d\n";
-  out << "# convention: unit-triangle (centres)\n";
+  if (table.convention == Convention::UnitTriangle)
+    out << "# convention: unit-triangle (centres)\n";
+  else
+    out << "# convention: " << convention_comment(table.convention, table.r, table.S) << "\n";
   out << "# layout: i x y\n";
   out << "# n: " << table.points.size() << "\n";
   if (!table.label.empty()) out << "# label: " << table.label << "\n";
@@ -185,7 +249,8 @@ struct Scanned {
   std::vector<Row> rows;
   std::optional<std::string> layout;  // from "# layout: ..."
   int layout_line = 0;
-  std::optional<long double> declared_d;  // from "# d: ..."
+  std::optional<long double> declared_d;          // from "# d: ..."
+  std::optional<Convention> declared_convention;  // from "# convention: NAME ..."
 };
 
 std::string_view trim(std::string_view s) {
@@ -245,6 +310,18 @@ void read_comment(std::string_view body, int line, bool text_layouts, Scanned& s
                        at_line(s.layout_line) + "'s '" + *s.layout + "'");
     s.layout = layout;
     s.layout_line = line;
+  } else if (lower.starts_with("convention:")) {
+    // The first word, when it names a convention (tripack's own headers add a description).
+    std::istringstream words(lower.substr(11));
+    std::string first;
+    if (words >> first) {
+      if (const auto c = parse_convention(first)) {
+        if (s.declared_convention && *s.declared_convention != *c)
+          throw InputError(at_line(line) + ": convention '" + first +
+                           "' contradicts an earlier convention line");
+        s.declared_convention = c;
+      }
+    }
   } else if (lower.starts_with("d:")) {
     std::istringstream words(std::string(body.substr(2)));
     std::string first;
@@ -428,6 +505,7 @@ PointsFile read_text(std::istream& in, bool records) {
   PointsFile file = assemble(s.rows, columns_of_layout(layout));
   file.layout = layout;
   file.declared_d = s.declared_d;
+  file.declared_convention = s.declared_convention;
   return file;
 }
 
@@ -445,6 +523,7 @@ PointsFile read_csv(std::istream& in) {
   PointsFile file;
   file.layout = "csv";
   file.declared_d = s.declared_d;
+  file.declared_convention = s.declared_convention;
   if (s.rows.empty()) return file;
   const Row& first = s.rows.front();
   const bool has_header = std::any_of(first.fields.begin(), first.fields.end(), [](auto& f) {
@@ -535,6 +614,8 @@ PointsFile read_json(std::istream& in) {
   // write_json's d, checked against the points like a "# d:" header line.
   if (j.is_object() && j.contains("d"))
     if (const auto d = json_real(j["d"]); d && *d > 0 && std::isfinite(*d)) file.declared_d = d;
+  if (j.is_object() && j.contains("convention") && j["convention"].is_string())
+    file.declared_convention = parse_convention(j["convention"].get<std::string>());
   if (j.is_array()) {
     file.layout = "json list";
     file.points = json_point_list(j);

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/conventions.hpp"
 #include "core/packing.hpp"
 
 namespace tripack {
@@ -26,14 +27,29 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Text: comment lines "# key: value" (n, d, class, k, p, variant), then one "x y" per line.
-void write_text(std::ostream& out, const Pattern& pattern);
-// CSV: header "index,x,y,rattler", one row per disk.
-void write_csv(std::ostream& out, const Pattern& pattern);
+// How the writers below lay out the coordinates. The defaults give the unit-triangle files
+// tripack always wrote. In another convention (SPEC §1) the coordinates are converted by
+// point_in_convention and the file says so: a "# convention: NAME (...)" comment line (JSON:
+// "convention"), which read_points reports and packing_from_points follows. d stays the
+// unit-triangle d in every convention (r and S are given beside it).
+struct WriteOptions {
+  Convention convention = Convention::UnitTriangle;
+  int digits = 21;    // significant digits of coordinates (21: a long double's round trip)
+  int d_digits = 21;  // of d, L, r and S (fewer when d is known to fewer digits)
+  std::string label;  // the packing's name (t22a), written in the header when given
+};
+
+// Text: comment lines "# key: value" (n, d, class, k, p, variant), then one "x y" per line; in
+// the radius convention "x y r" lines (the layout that implies it), in unit-disk-side "x y"
+// lines with S in the header.
+void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& options = {});
+// CSV: header "index,x,y,rattler", one row per disk (another convention: a comment line first).
+void write_csv(std::ostream& out, const Pattern& pattern, const WriteOptions& options = {});
 // JSON: {"n", "d" (string, 21 digits), "L", "class", "k", "p", "variant", "convention",
 //        "points": [[x, y], ...] (numbers), "points_exact": [["x", "y"], ...] (21-digit strings),
-//        "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}.
-void write_json(std::ostream& out, const Pattern& pattern);
+//        "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}; in another convention also
+//        "r" (the circles' radius in the file's units) and "side" (the container's side).
+void write_json(std::ostream& out, const Pattern& pattern, const WriteOptions& options = {});
 
 // A record table: every real number is a decimal string formatted by the caller, so digits
 // beyond long double (an MPFR polish) reach the file unchanged.
@@ -45,12 +61,16 @@ struct RecordsTable {
   std::string S;           // side of the smallest triangle holding n unit circles
   std::string L;           // 1 / d
   std::size_t bonds = 0;
-  std::vector<int> rattlers;                                // 0-based disk indices
-  std::vector<std::pair<std::string, std::string>> points;  // centres in the unit triangle
+  std::vector<int> rattlers;  // 0-based disk indices
+  // Centres in the unit triangle, or in `convention` (see WriteOptions).
+  std::vector<std::pair<std::string, std::string>> points;
+  Convention convention = Convention::UnitTriangle;
 };
 // Formats a pattern's numbers from long double with `digits` significant digits (capped at 21,
-// a long double's round trip). The label is left empty: ranking packings is the caller's job.
-RecordsTable records_table(const Pattern& pattern, int digits);
+// a long double's round trip), the points converted to `convention`. The label is left empty:
+// ranking packings is the caller's job.
+RecordsTable records_table(const Pattern& pattern, int digits,
+                           Convention convention = Convention::UnitTriangle);
 // "# key: value" header lines (n, label, class, d, r, S, L, bonds, rattlers, the convention and
 // "# layout: i x y"), then one "i x y" line per disk, i 0-based.
 void write_records(std::ostream& out, const RecordsTable& table);
@@ -66,6 +86,9 @@ struct PointsFile {
                                           // convention implied)
   std::optional<long double> declared_d;  // a "# d: value" header line or JSON "d", if any
   std::string layout;  // "x y", "x y r", "i x y", "csv", "json points", "json list"
+  // A "# convention: NAME ..." comment line or JSON "convention" naming one of the three
+  // conventions (other words there are ignored).
+  std::optional<Convention> declared_convention;
 };
 
 // Layouts read:
@@ -81,6 +104,8 @@ struct PointsFile {
 //  * JSON: {"points": [[x, y], ...]} (preferring "points_exact" of the same length), or
 //    {"points": [{"x": .., "y": ..}, ...]}, or a bare list of either; numbers or decimal
 //    strings, read to long double.
+// Text and CSV comment lines "# d: ..." and "# convention: NAME ..." (JSON: "d", "convention")
+// fill declared_d and declared_convention.
 // Errors are InputError, one line naming the file line (JSON: the point's position).
 PointsFile read_points(std::istream& in, FileFormat format);
 // As above, the format from the extension; errors are prefixed with the path.

@@ -207,6 +207,12 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
     throw InputError(fmt::format("expected {} points, the file has {}", *expected_n, pts.size()));
   if (pts.size() < 2)
     throw InputError(fmt::format("need at least 2 points, the file has {}", pts.size()));
+  if (convention && file.declared_convention && *convention != *file.declared_convention)
+    throw InputError(
+        fmt::format("the file declares the {} convention (a '# convention:' line or "
+                    "JSON \"convention\"), not {}",
+                    convention_name(*file.declared_convention), convention_name(*convention)));
+  if (!convention) convention = file.declared_convention;
   Convention c = convention.value_or(Convention::UnitTriangle);
   if (file.radius) {
     if (convention && *convention != Convention::Radius)
@@ -218,6 +224,7 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
   }
 
   PointsReading reading;
+  reading.convention = c;
   long double file_units_per_side = 1;  // lengths in the file per unit-triangle length
   if (c == Convention::UnitTriangle)
     snap_into_unit_triangle(pts, rounding_tolerance, reading.warnings);
@@ -228,6 +235,10 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
   pk.points = std::move(pts);
   pk.d = minimum_distance(pk.points);
 
+  if (file.declared_d)
+    reading.stated_d = file.declared_d;
+  else if (file.radius)
+    reading.stated_d = 2 * *file.radius / file_units_per_side;
   if (file.radius) {
     const long double closest = pk.d * file_units_per_side, diameter = 2 * *file.radius;
     if (std::fabs(closest / diameter - 1) > 1e-6L)

@@ -18,10 +18,17 @@ namespace tripack {
 struct PointsReading {
   Packing packing;                    // points in the unit triangle, d their minimum distance
   std::vector<std::string> warnings;  // one line each: what was repaired or looks suspicious
+  Convention convention = Convention::UnitTriangle;  // how the coordinates were read
+  // The disks' diameter the file itself states, in the unit triangle: its "# d:" header (JSON
+  // "d"), else 2r of an "x y r" file scaled like the points. packing.d below it means the
+  // file's disks overlap (db import refuses that; analyze warns).
+  std::optional<long double> stated_d;
 };
 
-// `convention`: how the coordinates are meant; nullopt = unit-triangle, or radius when the file
-// carries r (an "x y r" file, where any other explicit convention is an InputError).
+// `convention`: how the coordinates are meant; nullopt = the file's own "# convention:" line
+// (JSON "convention"), else unit-triangle, or radius when the file carries r (an "x y r" file,
+// where any other explicit convention is an InputError). An explicit convention other than the
+// one the file declares is an InputError.
 //  * unit-triangle: the points must lie in the unit triangle; those outside by at most
 //    `rounding_tolerance` (a length in units of the side) are moved onto it (one warning), any
 //    farther out is an InputError.

@@ -256,11 +256,10 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   const auto start = Clock::now();
   PointsFile file = read_points_file(request.file);
   result.layout = file.layout;
-  // An x y r file implies the radius convention.
-  result.convention =
-      request.convention.value_or(file.radius ? Convention::Radius : Convention::UnitTriangle);
   PointsReading reading =
       packing_from_points(std::move(file), request.convention, request.expected_n);
+  // As read: the file's declared convention, radius for an x y r file.
+  result.convention = reading.convention;
   result.warnings = std::move(reading.warnings);
   result.read_seconds = seconds_since(start);
   AnalysisOptions options;

@@ -43,6 +43,28 @@ std::string rank_letters(std::size_t rank) {
   return letters;
 }
 
+std::vector<std::size_t> label_order(const std::vector<RankKey>& keys,
+                                     const std::vector<std::uint64_t>& tie,
+                                     long double d_relative_tolerance) {
+  std::vector<std::size_t> order(keys.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto d_of = [&](std::size_t i) { return keys[i].d; };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return d_of(a) != d_of(b) ? d_of(a) > d_of(b) : tie[a] < tie[b];
+  });
+  // Packings whose d agree to the labelling tolerance share a rank: order them by bonds (then
+  // the tie key), not by d's last bits, which vary from run to run.
+  for (std::size_t lo = 0, hi = 0; lo < order.size(); lo = hi) {
+    for (hi = lo + 1; hi < order.size() &&
+                      std::fabs(d_of(order[hi]) / d_of(order[hi - 1]) - 1) <= d_relative_tolerance;
+         ++hi) {
+    }
+    std::stable_sort(order.begin() + static_cast<long>(lo), order.begin() + static_cast<long>(hi),
+                     [&](std::size_t a, std::size_t b) { return keys[a].bonds > keys[b].bonds; });
+  }
+  return order;
+}
+
 std::vector<std::string> paper_labels(long long n, const std::vector<RankKey>& sorted,
                                       long double d_relative_tolerance) {
   auto same_d = [&](std::size_t i, std::size_t j) {
@@ -144,23 +166,13 @@ std::vector<DistinctPacking> distinct_of(std::vector<RunOutcome>& runs, long lon
       x.first_seed = runs[usable[u]].seed;
     }
   }
-  std::vector<std::size_t> order(distinct.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  auto d_of = [&](std::size_t i) { return distinct[i].pattern.packing.d; };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return d_of(a) != d_of(b) ? d_of(a) > d_of(b) : distinct[a].first_seed < distinct[b].first_seed;
-  });
-  // Packings whose d agree to the labelling tolerance share a rank: order them by bonds (then
-  // seed), not by d's last bits, which vary from run to run.
-  for (std::size_t lo = 0, hi = 0; lo < order.size(); lo = hi) {
-    for (hi = lo + 1; hi < order.size() &&
-                      std::fabs(d_of(order[hi]) / d_of(order[hi - 1]) - 1) <= kSameDTolerance;
-         ++hi) {
-    }
-    std::stable_sort(
-        order.begin() + static_cast<long>(lo), order.begin() + static_cast<long>(hi),
-        [&](std::size_t a, std::size_t b) { return distinct[a].bonds > distinct[b].bonds; });
+  std::vector<RankKey> unsorted;
+  std::vector<std::uint64_t> seeds;
+  for (const auto& x : distinct) {
+    unsorted.push_back({x.pattern.packing.d, x.bonds});
+    seeds.push_back(x.first_seed);
   }
+  const std::vector<std::size_t> order = label_order(unsorted, seeds, kSameDTolerance);
   std::vector<DistinctPacking> sorted;
   std::vector<RankKey> keys;
   for (std::size_t i : order) {

@@ -83,5 +83,11 @@ struct RankKey {
 };
 std::vector<std::string> paper_labels(long long n, const std::vector<RankKey>& sorted,
                                       long double d_relative_tolerance = 1e-12L);
+// The order packings are labelled in (indices into `keys`): d decreasing; where d agree to the
+// tolerance, more bonds first, then the smaller `tie` (the first seed: the billiards search and
+// `tripack db` rank alike), then the given order.
+std::vector<std::size_t> label_order(const std::vector<RankKey>& keys,
+                                     const std::vector<std::uint64_t>& tie,
+                                     long double d_relative_tolerance = 1e-12L);
 
 }  // namespace tripack::pipeline

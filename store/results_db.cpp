@@ -4,6 +4,7 @@
 #include <sqlite3.h>
 
 #include <cstring>
+#include <filesystem>
 #include <sstream>
 #include <utility>
 
@@ -13,9 +14,11 @@ namespace tripack::store {
 
 namespace {
 
-constexpr const char* kSchema = R"sql(
-CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS packings(
+// The packings table of version 2, under a given name (the migration builds it beside the old
+// one). first_seed is NULL for a packing imported from a file that no run has found.
+std::string packings_table(const char* name) {
+  return fmt::format(R"sql(
+CREATE TABLE IF NOT EXISTS {}(
   id INTEGER PRIMARY KEY,
   n INTEGER NOT NULL,
   d TEXT NOT NULL,
@@ -26,10 +29,18 @@ CREATE TABLE IF NOT EXISTS packings(
   bonds TEXT NOT NULL,
   rattlers TEXT NOT NULL,
   certified INTEGER NOT NULL,
-  first_seed INTEGER NOT NULL,
+  first_seed INTEGER,
   runs INTEGER NOT NULL,
+  origin TEXT NOT NULL,
+  source TEXT,
   tool_version TEXT NOT NULL,
   UNIQUE(n, graph_hash, d_key));
+)sql",
+                     name);
+}
+
+constexpr const char* kOtherTables = R"sql(
+CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS runs(
   n INTEGER NOT NULL,
   seed INTEGER NOT NULL,
@@ -39,6 +50,20 @@ CREATE TABLE IF NOT EXISTS runs(
   packing_id INTEGER REFERENCES packings(id),
   tool_version TEXT NOT NULL,
   PRIMARY KEY(n, seed));
+)sql";
+
+// Version 1 -> 2: the packings table rebuilt with origin and source columns and a nullable
+// first_seed (SQLite cannot change a column's NOT NULL in place): create the new table, copy,
+// drop the old, rename (SQLite's documented order, which leaves runs' REFERENCES packings(id)
+// naming the new table). Run inside the open's write transaction with foreign keys off.
+constexpr const char* kMigrate1To2 = R"sql(
+INSERT INTO packings_v2(id, n, d, d_key, d_value, graph_hash, points, bonds, rattlers, certified,
+                        first_seed, runs, origin, source, tool_version)
+  SELECT id, n, d, d_key, d_value, graph_hash, points, bonds, rattlers, certified, first_seed,
+         runs, 'campaign', NULL, tool_version FROM packings;
+DROP TABLE packings;
+ALTER TABLE packings_v2 RENAME TO packings;
+UPDATE meta SET value = '2' WHERE key = 'schema_version';
 )sql";
 
 // A prepared statement, finalized on scope exit.
@@ -70,6 +95,7 @@ class Statement {
     fail("step");
   }
   long long integer(int c) const { return sqlite3_column_int64(stmt_, c); }
+  bool is_null(int c) const { return sqlite3_column_type(stmt_, c) == SQLITE_NULL; }
   double real(int c) const { return sqlite3_column_double(stmt_, c); }
   std::string text(int c) const {
     const auto* p = sqlite3_column_text(stmt_, c);
@@ -159,29 +185,96 @@ std::string d_key(const std::string& d) {
 }
 
 constexpr const char* kPackingColumns =
-    "n, d, graph_hash, points, bonds, rattlers, certified, first_seed, runs, tool_version";
+    "id, n, d, graph_hash, points, bonds, rattlers, certified, first_seed, runs, origin, source, "
+    "tool_version";
+// Largest d first; then most runs, then the first seed (imports without one last), then age.
+constexpr const char* kPackingOrder = "d_value DESC, runs DESC, first_seed IS NULL, first_seed, id";
 
 StoredPacking packing_from_row(const Statement& s) {
   StoredPacking p;
-  p.n = s.integer(0);
-  p.d = s.text(1);
-  p.graph_hash = s.text(2);
-  p.points = parse_points(s.text(3));
-  p.bonds = parse_bonds(s.text(4));
-  p.rattlers = parse_ints(s.text(5));
-  p.certified = s.integer(6) != 0;
-  p.first_seed = static_cast<std::uint64_t>(s.integer(7));
-  p.runs = s.integer(8);
-  p.tool_version = s.text(9);
+  p.id = s.integer(0);
+  p.n = s.integer(1);
+  p.d = s.text(2);
+  p.graph_hash = s.text(3);
+  p.points = parse_points(s.text(4));
+  p.bonds = parse_bonds(s.text(5));
+  p.rattlers = parse_ints(s.text(6));
+  p.certified = s.integer(7) != 0;
+  p.has_seed = !s.is_null(8);
+  p.first_seed = p.has_seed ? static_cast<std::uint64_t>(s.integer(8)) : 0;
+  p.runs = s.integer(9);
+  p.origin = s.text(10);
+  p.source = s.text(11);
+  p.tool_version = s.text(12);
   return p;
+}
+
+// The row of the same packing (n, contact graph, d to 12 digits), if stored.
+std::optional<long long> find_packing(sqlite3* db, const std::string& path,
+                                      const StoredPacking& p) {
+  Statement find(db, path,
+                 "SELECT id FROM packings WHERE n = ?1 AND graph_hash = ?2 AND d_key = ?3");
+  find.bind(1, p.n).bind(2, p.graph_hash).bind(3, d_key(p.d));
+  if (find.step()) return find.integer(0);
+  return std::nullopt;
+}
+
+// Inserts a packing; first_seed is NULL when it has no seed (an import).
+long long insert_packing(sqlite3* db, const std::string& path, const StoredPacking& p) {
+  Statement add(db, path,
+                "INSERT INTO packings(n, d, d_key, d_value, graph_hash, points, bonds, rattlers, "
+                "certified, first_seed, runs, origin, source, tool_version) "
+                "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14)");
+  add.bind(1, p.n)
+      .bind(2, p.d)
+      .bind(3, d_key(p.d))
+      .bind(4, static_cast<double>(std::stold(p.d)))
+      .bind(5, p.graph_hash)
+      .bind(6, points_text(p.points))
+      .bind(7, bonds_text(p.bonds))
+      .bind(8, ints_text(p.rattlers))
+      .bind(9, static_cast<long long>(p.certified))
+      .bind(11, p.runs)
+      .bind(12, p.origin)
+      .bind(14, p.tool_version);
+  if (p.has_seed) add.bind(10, static_cast<long long>(p.first_seed));  // else NULL
+  if (!p.source.empty()) add.bind(13, p.source);                       // else NULL
+  add.step();
+  return sqlite3_last_insert_rowid(db);
+}
+
+// The schema version the file records; nullopt when it has no meta table or no version row.
+std::optional<std::string> schema_version(sqlite3* db, const std::string& path) {
+  Statement meta(db, path, "SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = 'meta'");
+  if (!meta.step()) return std::nullopt;
+  Statement version(db, path, "SELECT value FROM meta WHERE key = 'schema_version'");
+  if (!version.step()) return std::nullopt;
+  return version.text(0);
+}
+
+long long table_count(sqlite3* db, const std::string& path) {
+  Statement s(db, path, "SELECT COUNT(*) FROM sqlite_master WHERE type = 'table'");
+  s.step();
+  return s.integer(0);
+}
+
+[[noreturn]] void wrong_version(const std::string& path, const std::string& version) {
+  throw StoreError(fmt::format("database {} has schema version {}; this tripack reads version {}",
+                               path, version, kSchemaVersion));
 }
 
 }  // namespace
 
 ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
+  if (!options.create) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+      throw StoreError(fmt::format(
+          "no database {} (a campaign or db import creates one; give --db FILE)", path));
+  }
   sqlite3* db = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
-      SQLITE_OK) {
+  const int flags = SQLITE_OPEN_READWRITE | (options.create ? SQLITE_OPEN_CREATE : 0);
+  if (sqlite3_open_v2(path.c_str(), &db, flags, nullptr) != SQLITE_OK) {
     const std::string detail = db ? sqlite3_errmsg(db) : "out of memory";
     sqlite3_close(db);
     throw StoreError(fmt::format("cannot open database {} ({})", path, detail));
@@ -190,26 +283,47 @@ ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
   sqlite3_busy_timeout(db, options.busy_timeout_ms);
   if (sqlite3_db_readonly(db, "main") == 1)
     throw StoreError(fmt::format("cannot write to database {} (read-only)", path));
-  // WAL: readers do not block the writer, and a commit survives a killed process.
-  exec(db, path, "PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA foreign_keys=ON;");
-  exec(db, path, "BEGIN IMMEDIATE");
-  exec(db, path, kSchema);
-  {
-    Statement version(db, path, "SELECT value FROM meta WHERE key = 'schema_version'");
-    if (version.step()) {
-      const std::string v = version.text(0);
-      if (v != std::to_string(kSchemaVersion)) {
-        exec(db, path, "ROLLBACK");
-        throw StoreError(
-            fmt::format("database {} has schema version {}; this tripack reads version {}", path, v,
-                        kSchemaVersion));
+  exec(db, path, "PRAGMA synchronous=NORMAL");
+  // Reading the schema is the first access to the file: a text file fails here (not a database).
+  const long long tables = table_count(db, path);
+  const auto version = schema_version(db, path);
+  if (tables > 0 && !version)
+    throw StoreError(fmt::format(
+        "{} is not a tripack database (an SQLite database without tripack's tables)", path));
+  if (version && *version != std::to_string(kSchemaVersion) && *version != "1")
+    wrong_version(path, *version);
+  if (tables == 0 && !options.create)
+    throw StoreError(fmt::format("{} is not a tripack database (it is empty)", path));
+  if (!version || *version == "1") {
+    // A new file, or version 1: written in one transaction, checked again inside it (another
+    // process may have created or migrated it meanwhile). WAL: readers do not block the writer,
+    // and a commit survives a killed process.
+    exec(db, path, "PRAGMA journal_mode=WAL");
+    exec(db, path, "BEGIN IMMEDIATE");
+    try {
+      const auto now = schema_version(db, path);
+      if (!now) {
+        if (table_count(db, path) > 0)
+          throw StoreError(fmt::format(
+              "{} is not a tripack database (an SQLite database without tripack's tables)", path));
+        exec(db, path, packings_table("packings").c_str());
+        exec(db, path, kOtherTables);
+        Statement set(db, path, "INSERT INTO meta(key, value) VALUES ('schema_version', ?1)");
+        set.bind(1, std::to_string(kSchemaVersion)).step();
+      } else if (*now == "1") {
+        exec(db, path, packings_table("packings_v2").c_str());
+        exec(db, path, kMigrate1To2);
+      } else if (*now != std::to_string(kSchemaVersion)) {
+        wrong_version(path, *now);
       }
-    } else {
-      Statement set(db, path, "INSERT INTO meta(key, value) VALUES ('schema_version', ?1)");
-      set.bind(1, std::to_string(kSchemaVersion)).step();
+      exec(db, path, "COMMIT");
+    } catch (...) {
+      sqlite3_exec(db, "ROLLBACK", nullptr, nullptr, nullptr);
+      throw;
     }
   }
-  exec(db, path, "COMMIT");
+  // Outside any transaction (the pragma is a no-op inside one).
+  exec(db, path, "PRAGMA foreign_keys=ON");
   return out;
 }
 
@@ -256,32 +370,22 @@ bool ResultsDb::record(const RunRecord& run) {
     }
     long long packing_id = -1;
     if (run.packing) {
-      const StoredPacking& p = *run.packing;
-      Statement find(db_, path_,
-                     "SELECT id FROM packings WHERE n = ?1 AND graph_hash = ?2 AND d_key = ?3");
-      find.bind(1, p.n).bind(2, p.graph_hash).bind(3, d_key(p.d));
-      if (find.step()) {
-        packing_id = find.integer(0);
-        Statement bump(db_, path_, "UPDATE packings SET runs = runs + 1 WHERE id = ?1");
-        bump.bind(1, packing_id).step();
+      StoredPacking p = *run.packing;
+      if (const auto id = find_packing(db_, path_, p)) {
+        packing_id = *id;
+        // An imported packing a run finds gets its first seed now.
+        Statement bump(db_, path_,
+                       "UPDATE packings SET runs = runs + 1, first_seed = COALESCE(first_seed, "
+                       "?2) WHERE id = ?1");
+        bump.bind(1, packing_id).bind(2, static_cast<long long>(run.seed)).step();
       } else {
-        Statement add(db_, path_,
-                      "INSERT INTO packings(n, d, d_key, d_value, graph_hash, points, bonds, "
-                      "rattlers, certified, first_seed, runs, tool_version) "
-                      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, 1, ?11)");
-        add.bind(1, p.n)
-            .bind(2, p.d)
-            .bind(3, d_key(p.d))
-            .bind(4, static_cast<double>(std::stold(p.d)))
-            .bind(5, p.graph_hash)
-            .bind(6, points_text(p.points))
-            .bind(7, bonds_text(p.bonds))
-            .bind(8, ints_text(p.rattlers))
-            .bind(9, static_cast<long long>(p.certified))
-            .bind(10, static_cast<long long>(run.seed))
-            .bind(11, run.tool_version)
-            .step();
-        packing_id = sqlite3_last_insert_rowid(db_);
+        p.first_seed = run.seed;
+        p.has_seed = true;
+        p.runs = 1;
+        p.origin = "campaign";
+        p.source.clear();
+        p.tool_version = run.tool_version;
+        packing_id = insert_packing(db_, path_, p);
       }
     }
     Statement add(db_, path_,
@@ -303,10 +407,28 @@ bool ResultsDb::record(const RunRecord& run) {
   return true;
 }
 
+std::vector<AddOutcome> ResultsDb::add_packings(const std::vector<StoredPacking>& packings) {
+  std::vector<AddOutcome> outcomes;
+  exec(db_, path_, "BEGIN IMMEDIATE");
+  try {
+    for (const auto& p : packings) {
+      if (const auto id = find_packing(db_, path_, p)) {
+        outcomes.push_back({*id, false});
+        continue;
+      }
+      outcomes.push_back({insert_packing(db_, path_, p), true});
+    }
+    exec(db_, path_, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+  return outcomes;
+}
+
 std::vector<StoredPacking> ResultsDb::packings(long long n) const {
-  const std::string sql = fmt::format(
-      "SELECT {} FROM packings WHERE n = ?1 ORDER BY d_value DESC, runs DESC, first_seed",
-      kPackingColumns);
+  const std::string sql = fmt::format("SELECT {} FROM packings WHERE n = ?1 ORDER BY {}",
+                                      kPackingColumns, kPackingOrder);
   Statement s(db_, path_, sql.c_str());
   s.bind(1, n);
   std::vector<StoredPacking> out;
@@ -317,9 +439,9 @@ std::vector<StoredPacking> ResultsDb::packings(long long n) const {
 std::vector<StoredPacking> ResultsDb::best_per_n() const {
   // The largest d of every n (ties: most runs, then first seed), by n.
   const std::string sql = fmt::format(
-      "SELECT {} FROM (SELECT *, ROW_NUMBER() OVER (PARTITION BY n ORDER BY d_value DESC, runs "
-      "DESC, first_seed) AS rank FROM packings) WHERE rank = 1 ORDER BY n",
-      kPackingColumns);
+      "SELECT {} FROM (SELECT *, ROW_NUMBER() OVER (PARTITION BY n ORDER BY {}) AS rank FROM "
+      "packings) WHERE rank = 1 ORDER BY n",
+      kPackingColumns, kPackingOrder);
   Statement s(db_, path_, sql.c_str());
   std::vector<StoredPacking> out;
   while (s.step()) out.push_back(packing_from_row(s));
@@ -331,6 +453,36 @@ std::string ResultsDb::integrity_check() const {
   std::string result;
   while (s.step()) result += (result.empty() ? "" : "; ") + s.text(0);
   return result;
+}
+
+DbStatistics ResultsDb::statistics() const {
+  DbStatistics st;
+  st.integrity = integrity_check();
+  // One read transaction: every count from the same state of the file.
+  exec(db_, path_, "BEGIN");
+  try {
+    auto count = [&](const char* sql) {
+      Statement s(db_, path_, sql);
+      s.step();
+      return s.integer(0);
+    };
+    st.runs = count("SELECT COUNT(*) FROM runs");
+    st.packings = count("SELECT COUNT(*) FROM packings");
+    st.imported = count("SELECT COUNT(*) FROM packings WHERE origin = 'import'");
+    st.n_values = count("SELECT COUNT(*) FROM (SELECT n FROM runs UNION SELECT n FROM packings)");
+    st.duplicate_runs = count(
+        "SELECT COALESCE(SUM(c - 1), 0) FROM (SELECT COUNT(*) AS c FROM runs GROUP BY n, seed "
+        "HAVING COUNT(*) > 1)");
+    // d to 12 significant digits recomputed from the stored text, not the d_key column.
+    st.duplicate_packings = count(
+        "SELECT COALESCE(SUM(c - 1), 0) FROM (SELECT COUNT(*) AS c FROM packings GROUP BY n, "
+        "graph_hash, printf('%.11e', CAST(d AS REAL)) HAVING COUNT(*) > 1)");
+    exec(db_, path_, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+  return st;
 }
 
 }  // namespace tripack::store

@@ -17,7 +17,10 @@ struct sqlite3;
 
 namespace tripack::store {
 
-inline constexpr int kSchemaVersion = 1;
+// Version 2 (issue 11, db import): packings record where they came from (origin "campaign" or
+// "import", source = the imported file's name) and imported ones have no seed (first_seed NULL).
+// A version-1 file is migrated in place when opened (one transaction; every row kept).
+inline constexpr int kSchemaVersion = 2;
 
 class StoreError : public std::runtime_error {
  public:
@@ -28,6 +31,7 @@ class StoreError : public std::runtime_error {
 // graph_hash identifies the contact graph up to the triangle's 6 symmetries (computed by the
 // caller), so (n, graph_hash, d to 12 digits) is one packing.
 struct StoredPacking {
+  long long id = 0;  // the row's id once stored (0 before)
   long long n = 0;
   std::string d;
   std::string graph_hash;
@@ -35,9 +39,32 @@ struct StoredPacking {
   std::vector<Bond> bonds;
   std::vector<int> rattlers;
   bool certified = false;
-  std::uint64_t first_seed = 0;
-  long long runs = 1;  // units that ended in it
+  std::uint64_t first_seed = 0;     // the first run that ended in it, when has_seed
+  bool has_seed = true;             // false: imported, and no run has ended in it since
+  long long runs = 1;               // units that ended in it (0 for an import no run found)
+  std::string origin = "campaign";  // "campaign" (a run found it) or "import" (from a file)
+  std::string source;               // the imported file's name; empty for a campaign's
   std::string tool_version;
+};
+
+// What `tripack db check` reports. Counts come from the tables themselves (GROUP BY), so a
+// duplicate the unique constraints should have prevented is seen.
+struct DbStatistics {
+  std::string integrity;  // PRAGMA integrity_check: "ok" when sound
+  long long runs = 0;
+  long long packings = 0;
+  long long imported = 0;            // packings whose origin is "import"
+  long long n_values = 0;            // distinct n with a run or a packing
+  long long duplicate_runs = 0;      // rows beyond the first sharing (n, seed)
+  long long duplicate_packings = 0;  // rows beyond the first sharing (n, graph_hash, d to 12
+                                     // significant digits)
+};
+
+// Whether add_packings stored a packing, or found it already there (same n, contact graph and d
+// to 12 digits): then nothing changed and `id` is the row that was there.
+struct AddOutcome {
+  long long id = 0;
+  bool added = false;
 };
 
 // One finished work unit.
@@ -53,12 +80,16 @@ struct RunRecord {
 
 struct OpenOptions {
   int busy_timeout_ms = 5000;  // wait this long for a lock held by another writer
+  // false: the file must exist (the read commands never create an empty database).
+  bool create = true;
 };
 
 class ResultsDb {
  public:
-  // Creates the file (and its schema) if missing; refuses a file of another schema version, a
-  // file that is not a tripack database, and one it cannot write.
+  // Creates the file (and its schema) if missing and options.create; refuses a file of another
+  // schema version (a version-1 file is migrated), a file that is not a tripack database (also
+  // an SQLite file without tripack's tables), and one it cannot write. A database already at
+  // this version is opened without a write lock, so reading works while another process writes.
   static ResultsDb open(const std::string& path, const OpenOptions& options = {});
   ResultsDb(ResultsDb&&) noexcept;
   ResultsDb& operator=(ResultsDb&&) noexcept;
@@ -70,9 +101,13 @@ class ResultsDb {
   // Records the unit and its packing in one transaction; a unit already recorded is left as it
   // is (false), so a rerun never counts a unit twice.
   bool record(const RunRecord& run);
+  // Packings that come with no run (db import), all in one transaction: each is added unless the
+  // same packing is there already (see AddOutcome); any failure stores none of them.
+  std::vector<AddOutcome> add_packings(const std::vector<StoredPacking>& packings);
   std::vector<StoredPacking> packings(long long n) const;  // largest d first
   std::vector<StoredPacking> best_per_n() const;           // one per n, by n
   std::string integrity_check() const;                     // "ok" when sound
+  DbStatistics statistics() const;                         // integrity and counts
   const std::string& path() const { return path_; }
 
  private:

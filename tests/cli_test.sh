@@ -274,6 +274,81 @@ expect_error "campaign range without n >= 2" "has no n >= 2" campaign --n 0..1 -
 printf 'x y\n0.1 0.2\n' >"$cdb.txt"
 expect_error "db best on a text file" "not a tripack database" db best --db "$cdb.txt"
 expect_error "campaign on a text file" "not a tripack database" campaign --n 5 --db "$cdb.txt"
+expect_output "campaign --json" '"recorded":0' campaign --n 10..11 --runs 3 --db "$cdb" --json
+expect_output "db best --json" '"label":"t11a"' db best 11 --db "$cdb" --json
+expect_output "db check" "integrity ok" db check --db "$cdb"
+expect_output "db check --json: no duplicates" '"duplicates":0' db check --db "$cdb" --json
+expect_output "db check --json: runs" '"runs":6' db check --db "$cdb" --json
+# db export / import: the best of n = 11 out in every format and convention, and back in.
+ctmp=$(mktemp -d)
+expect_output "db export to stdout" "# label: t11a" db export 11 --db "$cdb"
+expect_output "db export records radius" "# convention: radius" db export 11 --db "$cdb" --format records --convention radius
+for f in txt csv json pck; do
+  for c in unit-triangle radius unit-disk-side; do
+    "$TRIPACK" db export 11 --db "$cdb" --convention "$c" -o "$ctmp/t11a.$c.$f" >/dev/null 2>&1
+  done
+done
+expect_output "db import of every export: a new database" "1 stored, 2 already there" db import "$ctmp"/t11a.*.txt --db "$ctmp/copy.db"
+expect_output "db import of every export: recognised" "12 already there" db import "$ctmp"/t11a.* --db "$cdb"
+expect_output "db import --json" '"stored":false' db import "$ctmp/t11a.radius.json" --db "$cdb" --json
+expect_output "db export --all -o DIR" "t11a.csv" db export 11 --db "$cdb" --all --format csv -o "$ctmp/all"
+if [ "$(ls "$ctmp/all" | wc -l)" -eq "$("$TRIPACK" db export 11 --db "$cdb" --all --format json | grep -c '"label"')" ]; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: db export --all: one file per packing"; fi
+expect_output "db best shows the import's source" "t11a" db best --db "$ctmp/copy.db"
+# Bad input: one line, non-zero exit, nothing created or stored.
+expect_error "db export: missing database" "no database" db export 11 --db "$ctmp/none.db"
+expect_error "db best: missing database" "no database" db best --db "$ctmp/none.db"
+expect_error "db check: missing database" "no database" db check --db "$ctmp/none.db"
+if [ ! -e "$ctmp/none.db" ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: a read command created a database"; fi
+expect_error "db export: a text file as --db" "not a tripack database" db export 11 --db "$cdb.txt"
+expect_error "db check: a text file as --db" "not a tripack database" db check --db "$cdb.txt"
+expect_error "db import: a text file as --db" "not a tripack database" db import "$ctmp/t11a.radius.txt" --db "$cdb.txt"
+expect_error "db export: n with no packings" "no packings of n = 40" db export 40 --db "$cdb"
+expect_error "db export: rank out of range" "rank 99 is out of range" db export 11 --db "$cdb" --rank 99
+expect_error "db export: unknown format" "--format must be" db export 11 --db "$cdb" --format xml
+expect_error "db export: unknown convention" "unknown convention 'diameter'" db export 11 --db "$cdb" --convention diameter
+expect_error "db export: --rank and --all" "excludes" db export 11 --db "$cdb" --rank 2 --all
+out=$("$TRIPACK" db best 40 --db "$cdb" --json 2>/dev/null)
+if [ $? -ne 0 ] && grep -qF '{"error":"no packings of n = 40' <<<"$out"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: db errors as JSON: $out"; fi
+before=$("$TRIPACK" db check --db "$cdb" --json | sed 's/"seconds":[^,}]*//')
+sed 's/^# d: .*/# d: 0.3/' "$ctmp/t11a.unit-triangle.txt" >"$ctmp/overlap.txt"
+expect_error "db import: overlapping disks" "overlapping disks" db import "$ctmp/overlap.txt" --db "$cdb"
+printf '0.1 0.1\n0.5 abc\n0.9 0.05\n' >"$ctmp/malformed.txt"
+expect_error "db import: malformed file" "malformed.txt: line 2" db import "$ctmp/malformed.txt" --db "$cdb"
+expect_error "db import: one bad file stores none" "overlapping disks" db import "$ctmp/t11a.radius.csv" "$ctmp/overlap.txt" --db "$ctmp/copy2.db"
+if [ ! -e "$ctmp/copy2.db" ] && [ "$("$TRIPACK" db check --db "$cdb" --json | sed 's/"seconds":[^,}]*//')" = "$before" ]; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: a refused import changed a database"; fi
+# Another schema version, and a database another process is writing (sqlite3's shell or
+# Python's module holds a write transaction; skipped when neither is installed).
+hold_lock() {
+  if command -v sqlite3 >/dev/null; then
+    (echo "BEGIN IMMEDIATE;"; sleep "$2"; echo "COMMIT;") | sqlite3 "$1" >/dev/null &
+  elif command -v python3 >/dev/null; then
+    python3 -c "import sqlite3, sys, time; c = sqlite3.connect(sys.argv[1], isolation_level=None); c.execute('BEGIN IMMEDIATE'); time.sleep(float(sys.argv[2]))" "$1" "$2" &
+  else
+    return 1
+  fi
+  sleep 0.5
+}
+set_version() {
+  if command -v sqlite3 >/dev/null; then
+    sqlite3 "$1" "UPDATE meta SET value = '$2' WHERE key = 'schema_version'"
+  else
+    python3 -c "import sqlite3, sys; c = sqlite3.connect(sys.argv[1]); c.execute(\"UPDATE meta SET value = ? WHERE key = 'schema_version'\", (sys.argv[2],)); c.commit()" "$1" "$2"
+  fi
+}
+if command -v sqlite3 >/dev/null || command -v python3 >/dev/null; then
+  cp "$ctmp/copy.db" "$ctmp/v99.db"
+  set_version "$ctmp/v99.db" 99
+  expect_error "db of another schema version" "schema version 99" db export 11 --db "$ctmp/v99.db"
+  expect_error "import into another schema version" "schema version 99" db import "$ctmp/t11a.radius.txt" --db "$ctmp/v99.db"
+  hold_lock "$cdb" 8
+  expect_error "db import: a locked database" "locked" db import "$ctmp/t11a.unit-triangle.json" --db "$cdb"
+  expect_output "db check reads while another process writes" "integrity ok" db check --db "$cdb"
+  wait
+fi
+rm -rf "$ctmp"
 rm -f "$cdb" "$cdb-wal" "$cdb-shm" "$cdb.txt"
 
 # Progress (issue 10): on a terminal (script(1) gives the command a pty), a stage running over 2 s

@@ -1,5 +1,6 @@
 // store/: the campaign results database (issue 11): records, deduplication, resumption, refusal
-// of foreign files, locks, and what a killed writer leaves behind.
+// of foreign files, locks, what a killed writer leaves behind, the version-1 migration, imported
+// packings and the duplicate counts of `db check`.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sqlite3.h>
@@ -116,24 +117,225 @@ TEST(Store, RefusesAnotherSchemaVersionAndForeignFiles) {
 
 TEST(Store, ALockedDatabaseIsReportedNotCorrupted) {
   const std::string path = fresh_path("locked.db");
-  { ResultsDb::open(path); }
+  {
+    ResultsDb db = ResultsDb::open(path);
+    db.record(run(5, 1, packing(5, "0.5", "h5")));
+  }
   sqlite3* other = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &other), SQLITE_OK);
   ASSERT_EQ(sqlite3_exec(other, "BEGIN EXCLUSIVE", nullptr, nullptr, nullptr), SQLITE_OK);
-  // Opening checks the schema in a write transaction, so it is refused (after the busy
-  // timeout) with one line.
-  try {
-    ResultsDb::open(path, {.busy_timeout_ms = 100});
-    ADD_FAILURE() << "opened through an exclusive lock";
-  } catch (const StoreError& e) {
-    EXPECT_NE(std::string(e.what()).find("is locked by another process"), std::string::npos)
-        << e.what();
+  {
+    // A database at the current version opens without a write lock (WAL: reading goes on while
+    // another process writes); writing is refused after the busy timeout, with one line.
+    ResultsDb db = ResultsDb::open(path, {.busy_timeout_ms = 100});
+    EXPECT_EQ(db.packings(5).size(), 1u);
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      try {
+        if (attempt == 0)
+          db.record(run(5, 2, packing(5, "0.5", "h5")));
+        else
+          db.add_packings({packing(5, "0.25", "other")});
+        ADD_FAILURE() << "wrote through an exclusive lock";
+      } catch (const StoreError& e) {
+        EXPECT_NE(std::string(e.what()).find("is locked by another process"), std::string::npos)
+            << e.what();
+      }
+    }
   }
   sqlite3_exec(other, "COMMIT", nullptr, nullptr, nullptr);
   sqlite3_close(other);
   ResultsDb db = ResultsDb::open(path);
-  EXPECT_TRUE(db.record(run(5, 1, packing(5, "0.5", "h5"))));  // the lock gone, it works
+  EXPECT_EQ(db.run_count(), 1);  // nothing of the refused writes
+  EXPECT_EQ(db.packings(5).size(), 1u);
+  EXPECT_TRUE(db.record(run(5, 2, packing(5, "0.5", "h5"))));  // the lock gone, it works
   EXPECT_EQ(db.integrity_check(), "ok");
+}
+
+TEST(Store, ReadingNeverCreatesAFileAndRefusesForeignOnes) {
+  OpenOptions read;
+  read.create = false;
+  const std::string missing = fresh_path("missing.db");
+  try {
+    ResultsDb::open(missing, read);
+    ADD_FAILURE() << "opened a missing file";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("no database"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(missing));
+  const std::string empty = fresh_path("empty.db");
+  std::ofstream{empty};
+  try {
+    ResultsDb::open(empty, read);
+    ADD_FAILURE() << "read an empty file";
+  } catch (const StoreError& e) {
+    EXPECT_NE(std::string(e.what()).find("is empty"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(std::filesystem::file_size(empty), 0u);
+  // An SQLite file of something else: refused, not given tripack's tables.
+  const std::string foreign = fresh_path("foreign.db");
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(foreign.c_str(), &raw), SQLITE_OK);
+  ASSERT_EQ(sqlite3_exec(raw, "CREATE TABLE photos(id INTEGER)", nullptr, nullptr, nullptr),
+            SQLITE_OK);
+  sqlite3_close(raw);
+  for (const bool create : {false, true}) {
+    try {
+      ResultsDb::open(foreign, {.busy_timeout_ms = 100, .create = create});
+      ADD_FAILURE() << "opened a foreign SQLite file";
+    } catch (const StoreError& e) {
+      EXPECT_NE(std::string(e.what()).find("not a tripack database"), std::string::npos)
+          << e.what();
+    }
+  }
+  ASSERT_EQ(sqlite3_open(foreign.c_str(), &raw), SQLITE_OK);
+  sqlite3_stmt* s = nullptr;
+  sqlite3_prepare_v2(raw, "SELECT COUNT(*) FROM sqlite_master", -1, &s, nullptr);
+  ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
+  EXPECT_EQ(sqlite3_column_int(s, 0), 1);  // still only its own table
+  sqlite3_finalize(s);
+  sqlite3_close(raw);
+}
+
+// The schema tripack 0.1 wrote before packings had an origin (version 1), with one run and its
+// packing.
+void write_version_1(const std::string& path) {
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
+  const char* sql = R"sql(
+PRAGMA journal_mode=WAL;
+CREATE TABLE meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
+CREATE TABLE packings(id INTEGER PRIMARY KEY, n INTEGER NOT NULL, d TEXT NOT NULL,
+  d_key TEXT NOT NULL, d_value REAL NOT NULL, graph_hash TEXT NOT NULL, points TEXT NOT NULL,
+  bonds TEXT NOT NULL, rattlers TEXT NOT NULL, certified INTEGER NOT NULL,
+  first_seed INTEGER NOT NULL, runs INTEGER NOT NULL, tool_version TEXT NOT NULL,
+  UNIQUE(n, graph_hash, d_key));
+CREATE TABLE runs(n INTEGER NOT NULL, seed INTEGER NOT NULL, outcome TEXT NOT NULL,
+  events INTEGER NOT NULL, seconds REAL NOT NULL, packing_id INTEGER REFERENCES packings(id),
+  tool_version TEXT NOT NULL, PRIMARY KEY(n, seed));
+INSERT INTO meta VALUES('schema_version', '1');
+INSERT INTO packings VALUES(1, 3, '0.5', '0.5', 0.5, 'h3', '0 0
+1 0
+0.5 0.8
+', '0 1
+', '2', 1, 7, 1, 'tripack 0.1');
+INSERT INTO runs VALUES(3, 7, 'certified', 10, 0.25, 1, 'tripack 0.1');
+)sql";
+  ASSERT_EQ(sqlite3_exec(raw, sql, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(raw);
+  sqlite3_close(raw);
+}
+
+TEST(Store, MigratesAVersion1FileInPlace) {
+  const std::string path = fresh_path("version1.db");
+  write_version_1(path);
+  {
+    ResultsDb db = ResultsDb::open(path);
+    const auto three = db.packings(3);
+    ASSERT_EQ(three.size(), 1u);
+    EXPECT_EQ(three[0].d, "0.5");
+    EXPECT_EQ(three[0].origin, "campaign");
+    EXPECT_TRUE(three[0].has_seed);
+    EXPECT_EQ(three[0].first_seed, 7u);
+    EXPECT_EQ(three[0].runs, 1);
+    EXPECT_EQ(three[0].rattlers, std::vector<int>{2});
+    EXPECT_TRUE(db.has_run(3, 7));
+    // The runs still point at their packing: a new run of the same packing is counted there.
+    EXPECT_TRUE(db.record(run(3, 8, packing(3, "0.5", "h3"))));
+    EXPECT_EQ(db.packings(3)[0].runs, 2);
+    EXPECT_EQ(db.statistics().integrity, "ok");
+  }
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
+  sqlite3_stmt* s = nullptr;
+  sqlite3_prepare_v2(raw, "SELECT value FROM meta WHERE key = 'schema_version'", -1, &s, nullptr);
+  ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
+  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)), "2");
+  sqlite3_finalize(s);
+  sqlite3_prepare_v2(raw, "PRAGMA foreign_key_check", -1, &s, nullptr);
+  EXPECT_EQ(sqlite3_step(s), SQLITE_DONE);  // every run's packing_id names a packing
+  sqlite3_finalize(s);
+  sqlite3_close(raw);
+  // Opening again does nothing more.
+  EXPECT_EQ(ResultsDb::open(path).run_count(), 2);
+}
+
+TEST(Store, ImportedPackingsHaveNoSeedUntilARunFindsThem) {
+  const std::string path = fresh_path("imported.db");
+  ResultsDb db = ResultsDb::open(path);
+  StoredPacking imported = packing(3, "0.75", "h3");
+  imported.has_seed = false;
+  imported.runs = 0;
+  imported.origin = "import";
+  imported.source = "t3a.txt";
+  const auto first = db.add_packings({imported, packing(3, "0.5", "other")});
+  ASSERT_EQ(first.size(), 2u);
+  EXPECT_TRUE(first[0].added);
+  EXPECT_TRUE(first[1].added);
+  // The same packing again (d equal to 12 digits): recognised, nothing changed.
+  imported.d = "0.750000000000000001";
+  const auto again = db.add_packings({imported});
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_FALSE(again[0].added);
+  EXPECT_EQ(again[0].id, first[0].id);
+  auto three = db.packings(3);
+  ASSERT_EQ(three.size(), 2u);
+  EXPECT_EQ(three[0].d, "0.75");
+  EXPECT_FALSE(three[0].has_seed);
+  EXPECT_EQ(three[0].runs, 0);
+  EXPECT_EQ(three[0].origin, "import");
+  EXPECT_EQ(three[0].source, "t3a.txt");
+  EXPECT_EQ(three[0].id, first[0].id);
+  // A campaign run that ends in it counts there and gives it its first seed.
+  EXPECT_TRUE(db.record(run(3, 9, packing(3, "0.75", "h3"))));
+  three = db.packings(3);
+  EXPECT_EQ(three[0].runs, 1);
+  EXPECT_TRUE(three[0].has_seed);
+  EXPECT_EQ(three[0].first_seed, 9u);
+  EXPECT_EQ(three[0].origin, "import");
+  const DbStatistics st = db.statistics();
+  EXPECT_EQ(st.runs, 1);
+  EXPECT_EQ(st.packings, 2);
+  EXPECT_EQ(st.imported, 1);
+  EXPECT_EQ(st.n_values, 1);
+  EXPECT_EQ(st.duplicate_runs, 0);
+  EXPECT_EQ(st.duplicate_packings, 0);
+}
+
+TEST(Store, StatisticsCountDuplicatesTheConstraintsWouldHaveStopped) {
+  const std::string path = fresh_path("duplicates.db");
+  {
+    ResultsDb db = ResultsDb::open(path);
+    db.record(run(4, 1, packing(4, "0.6", "h4")));
+    db.record(run(4, 2, packing(4, "0.6", "h4")));
+    db.record(run(5, 1, std::nullopt));
+    const DbStatistics st = db.statistics();
+    EXPECT_EQ(st.integrity, "ok");
+    EXPECT_EQ(st.runs, 3);
+    EXPECT_EQ(st.packings, 1);
+    EXPECT_EQ(st.n_values, 2);
+    EXPECT_EQ(st.duplicate_runs + st.duplicate_packings, 0);
+  }
+  // Tables rebuilt without their unique constraints, as a damaged or hand-edited file might be,
+  // then a run and a packing recorded twice: the counts see them (GROUP BY, not the constraints).
+  sqlite3* raw = nullptr;
+  ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
+  const char* sql = R"sql(
+CREATE TABLE runs_loose AS SELECT * FROM runs;
+DROP TABLE runs;
+ALTER TABLE runs_loose RENAME TO runs;
+INSERT INTO runs SELECT * FROM runs WHERE n = 4 AND seed = 2;
+CREATE TABLE packings_loose AS SELECT * FROM packings;
+DROP TABLE packings;
+ALTER TABLE packings_loose RENAME TO packings;
+INSERT INTO packings SELECT id + 1, n, '0.6000000000001', d_key || 'x', d_value, graph_hash, points,
+  bonds, rattlers, certified, first_seed, runs, origin, source, tool_version FROM packings;
+)sql";
+  ASSERT_EQ(sqlite3_exec(raw, sql, nullptr, nullptr, nullptr), SQLITE_OK) << sqlite3_errmsg(raw);
+  sqlite3_close(raw);
+  const DbStatistics st = ResultsDb::open(path).statistics();
+  EXPECT_EQ(st.runs, 4);
+  EXPECT_EQ(st.duplicate_runs, 1);
+  EXPECT_EQ(st.packings, 2);
+  EXPECT_EQ(st.duplicate_packings, 1);  // d equal to 12 digits though its d_key was changed
 }
 
 TEST(Store, AKilledWriterLosesNothingCommitted) {

@@ -1,0 +1,111 @@
+#include "campaign/import.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "analysis/compare.hpp"
+#include "campaign/stored.hpp"
+#include "core/io.hpp"
+#include "core/points.hpp"
+#include "pipeline/analyze.hpp"
+#include "store/results_db.hpp"
+
+namespace tripack::campaign {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// One file read, checked and analysed; `stored` is what goes into the database.
+ImportedPacking analyse_file(const ImportRequest& request, const std::string& path,
+                             store::StoredPacking& stored) {
+  const auto start = std::chrono::steady_clock::now();
+  ImportedPacking out;
+  out.file = path;
+  out.source = std::filesystem::path(path).filename().string();
+  PointsReading reading;
+  try {
+    PointsFile file = read_points_file(path);  // its errors name the file already
+    out.layout = file.layout;
+    try {
+      reading = packing_from_points(std::move(file), request.convention, std::nullopt);
+    } catch (const InputError& e) {
+      throw InputError(path + ": " + e.what());
+    }
+  } catch (const InputError& e) {
+    throw ImportError(e.what());
+  }
+  out.convention = reading.convention;
+  out.warnings = reading.warnings;
+  const Packing& start_packing = reading.packing;
+  out.n = static_cast<long long>(start_packing.size());
+  out.d_file = format_significant(start_packing.d, 18);
+  if (reading.stated_d && *reading.stated_d > start_packing.d * (1 + kOverlapTolerance))
+    throw ImportError(fmt::format(
+        "{}: overlapping disks: the file states d = {} but its closest centres are {} apart "
+        "(the disks overlap by {:.3g} of d); refused, nothing stored",
+        path, format_significant(*reading.stated_d, 18), out.d_file,
+        static_cast<double>(1 - start_packing.d / *reading.stated_d)));
+  const pipeline::Analysis analysis = pipeline::analyze_packing(start_packing, {});
+  out.verdict = analysis.status();
+  if (!analysis.certified())
+    throw ImportError(
+        fmt::format("{}: not certified ({}); refused, nothing stored", path, out.verdict));
+  const Pattern& p = analysis.pattern;
+  out.d = format_significant(p.packing.d, 18);
+  out.graph_hash = contact_graph_hash(p);
+  out.bonds = p.bonds.size();
+  out.rattlers = p.rattlers;
+  stored = {};
+  stored.n = out.n;
+  stored.d = out.d;
+  stored.graph_hash = out.graph_hash;
+  stored.points = p.packing.points;
+  stored.bonds = p.bonds;
+  stored.rattlers = p.rattlers;
+  stored.certified = true;
+  stored.has_seed = false;
+  stored.runs = 0;
+  stored.origin = "import";
+  stored.source = out.source;
+  stored.tool_version = request.tool_version;
+  out.seconds = seconds_since(start);
+  return out;
+}
+
+}  // namespace
+
+ImportResult import_packings(const ImportRequest& request) {
+  const auto start = std::chrono::steady_clock::now();
+  if (request.files.empty()) throw ImportError("db import needs at least one file");
+  ImportResult result;
+  result.db = request.db;
+  // A database that exists is checked before the analyses (a text file as --db, another
+  // version), so a long analysis cannot end in a refusal; a missing one is created only when
+  // there is something to store.
+  {
+    std::error_code ec;
+    if (std::filesystem::exists(request.db, ec)) store::ResultsDb::open(request.db);
+  }
+  std::vector<store::StoredPacking> stored(request.files.size());
+  for (std::size_t i = 0; i < request.files.size(); ++i)
+    result.packings.push_back(analyse_file(request, request.files[i], stored[i]));
+  store::ResultsDb db = store::ResultsDb::open(request.db);
+  const std::vector<store::AddOutcome> outcomes = db.add_packings(stored);
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    auto& x = result.packings[i];
+    x.added = outcomes[i].added;
+    x.id = outcomes[i].id;
+    (x.added ? result.added : result.already) += 1;
+    for (const auto& ranked : ranked_packings(db, x.n))
+      if (ranked.packing.id == x.id) x.label = ranked.label;
+  }
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace tripack::campaign

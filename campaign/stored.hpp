@@ -1,0 +1,57 @@
+// The results database read the way the rest of tripack ranks packings (issue 11): the stored
+// packings of n in the billiards search's order, labelled tNa, tNb, ... by
+// pipeline::label_order / paper_labels, and the results of `tripack db best`, `db check` and
+// `db export` (rendered by report/campaign_report.hpp). Read commands never create a database.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/packing.hpp"
+#include "store/results_db.hpp"
+
+namespace tripack::campaign {
+
+// One stored packing with its place among the packings of its n.
+struct RankedPacking {
+  store::StoredPacking packing;
+  std::string label;     // t22a, t17a40, t31a81.1, ... (SPEC §9)
+  std::size_t rank = 0;  // 1-based position, best first (`db export --rank`)
+};
+
+// Every stored packing of n, best first: d decreasing; d agreeing to 1e-12 by more bonds, then
+// by first seed (imports without a seed after), as `tripack billiards` orders its packings.
+std::vector<RankedPacking> ranked_packings(const store::ResultsDb& db, long long n);
+
+// The packing as a Pattern (points, d from the stored 18-digit text, bonds, rattlers).
+Pattern pattern_of(const store::StoredPacking& packing);
+
+// `tripack db best`: the best packing of every n in [n_first, n_last] that has one.
+struct BestTable {
+  std::string db;
+  std::vector<RankedPacking> rows;  // by n
+  double seconds = 0;
+};
+BestTable best_table(const store::ResultsDb& db, long long n_first, long long n_last);
+// Opens `path` for reading (it must exist).
+BestTable best_table(const std::string& path, long long n_first, long long n_last);
+
+// `tripack db check`.
+struct DbCheck {
+  std::string db;
+  int schema_version = store::kSchemaVersion;
+  store::DbStatistics stats;
+  long long duplicates() const { return stats.duplicate_runs + stats.duplicate_packings; }
+  bool ok() const { return stats.integrity == "ok" && duplicates() == 0; }
+  double seconds = 0;
+};
+DbCheck check_database(const std::string& path);
+
+// `tripack db export`: the packings of n asked for: rank `rank` (1 = the best), or all of them.
+// Throws std::invalid_argument (one line) when n has no stored packing or the rank is not one;
+// store::StoreError when there is no database.
+std::vector<RankedPacking> select_packings(const std::string& path, long long n, long long rank,
+                                           bool all);
+
+}  // namespace tripack::campaign

@@ -1,0 +1,243 @@
+// Renderers of `tripack campaign` and the `tripack db` commands (conventions in render.hpp).
+#include "report/campaign_report.hpp"
+
+#include <fmt/format.h>
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "core/conventions.hpp"
+#include "core/io.hpp"
+#include "report/fields.hpp"
+#include "report/render.hpp"
+
+namespace tripack::report {
+
+using nlohmann::json;
+
+namespace {
+
+// As json.cpp: invalid UTF-8 (a file name) is replaced, never thrown.
+void emit(std::ostream& out, const json& j) {
+  out << j.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
+}
+
+void row(std::ostream& out, std::initializer_list<std::string> fields) {
+  bool first = true;
+  for (const auto& f : fields) {
+    out << (first ? "" : ",") << csv_field(f);
+    first = false;
+  }
+  out << "\n";
+}
+
+template <class Int>
+std::string integer(Int v) {
+  return std::to_string(v);
+}
+
+std::string flag(bool b) {
+  return b ? "true" : "false";
+}
+
+std::string first_seed_text(const store::StoredPacking& p) {
+  return p.has_seed ? std::to_string(p.first_seed) : "-";
+}
+
+// "campaign" or "file NAME".
+std::string source_text(const store::StoredPacking& p) {
+  return p.origin == "import" ? "file " + p.source : p.origin;
+}
+
+// ----- the best-packing table (db best, campaign) --------------------------------------------
+
+json ranked_json(const campaign::RankedPacking& r, const RenderOptions& o) {
+  const auto& p = r.packing;
+  const long double L = 1 / std::stold(p.d);
+  json j{{"n", p.n},
+         {"rank", r.rank},
+         {"label", r.label},
+         {"d", p.d},
+         {"L", decimal17(L)},
+         {"delta", static_cast<double>(oler_delta(p.n, L))},
+         {"bonds", p.bonds.size()},
+         {"rattlers", p.rattlers.size()},
+         {"rattler_indices", p.rattlers},
+         {"certified", p.certified},
+         {"runs", p.runs},
+         {"first_seed", p.has_seed ? json(p.first_seed) : json(nullptr)},
+         {"origin", p.origin},
+         {"source", p.source.empty() ? json(nullptr) : json(p.source)},
+         {"graph_hash", p.graph_hash}};
+  if (o.points) {
+    json points = json::array();
+    for (const auto& q : p.points)
+      points.push_back({format_significant(q.x, 21), format_significant(q.y, 21)});
+    j["points"] = std::move(points);
+  }
+  return j;
+}
+
+json best_json(const campaign::BestTable& t, const RenderOptions& o) {
+  json rows = json::array();
+  for (const auto& r : t.rows) rows.push_back(ranked_json(r, o));
+  return rows;
+}
+
+// One line per n: n, d with every stored digit, the label, the runs that ended in it, its first
+// seed ("-" for an import no run has found) and where it came from.
+void best_text(std::ostream& out, const campaign::BestTable& t) {
+  out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", "n", "d", "label", "runs",
+                     "first seed", "source");
+  for (const auto& r : t.rows) {
+    const auto& p = r.packing;
+    out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", p.n, p.d, r.label, p.runs,
+                       first_seed_text(p), source_text(p));
+  }
+}
+
+void best_csv(std::ostream& out, const campaign::BestTable& t) {
+  row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
+            "origin", "source", "graph_hash"});
+  for (const auto& r : t.rows) {
+    const auto& p = r.packing;
+    row(out, {integer(p.n), integer(r.rank), r.label, p.d, integer(p.bonds.size()),
+              integer(p.rattlers.size()), flag(p.certified), integer(p.runs),
+              p.has_seed ? integer(p.first_seed) : "", p.origin, p.source, p.graph_hash});
+  }
+}
+
+}  // namespace
+
+// ----- tripack campaign -----------------------------------------------------------------------
+
+void render_text(std::ostream& out, const CampaignReport& r, const RenderOptions&) {
+  const auto& x = r.result;
+  out << fmt::format(
+      "campaign {}..{} x {} runs: {} units, {} already in {}, {} recorded now ({} certified, {} "
+      "errors){}, {:.1f} s\n",
+      r.n_first, r.n_last, r.runs, x.units, x.skipped, r.db, x.recorded, x.certified, x.errors,
+      x.cancelled ? ", interrupted (rerun to continue)" : "", x.seconds);
+  best_text(out, r.best);
+}
+
+void render_json(std::ostream& out, const CampaignReport& r, const RenderOptions& o) {
+  const auto& x = r.result;
+  emit(out, {{"n_first", r.n_first},
+             {"n_last", r.n_last},
+             {"runs_per_n", r.runs},
+             {"db", r.db},
+             {"units", x.units},
+             {"skipped", x.skipped},
+             {"recorded", x.recorded},
+             {"certified", x.certified},
+             {"errors", x.errors},
+             {"cancelled", x.cancelled},
+             {"best", best_json(r.best, o)},
+             {"seconds", x.seconds}});
+}
+
+void render_csv(std::ostream& out, const CampaignReport& r, const RenderOptions&) {
+  best_csv(out, r.best);
+}
+
+// ----- tripack db best ------------------------------------------------------------------------
+
+void render_text(std::ostream& out, const campaign::BestTable& t, const RenderOptions&) {
+  best_text(out, t);
+}
+
+void render_json(std::ostream& out, const campaign::BestTable& t, const RenderOptions& o) {
+  emit(out, {{"db", t.db}, {"best", best_json(t, o)}, {"seconds", t.seconds}});
+}
+
+void render_csv(std::ostream& out, const campaign::BestTable& t, const RenderOptions&) {
+  best_csv(out, t);
+}
+
+// ----- tripack db check -----------------------------------------------------------------------
+
+void render_text(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+  const auto& s = c.stats;
+  out << (s.integrity == "ok" ? std::string("integrity ok") : "integrity FAILED: " + s.integrity)
+      << "\n";
+  out << fmt::format("runs: {}\nn values: {}\npackings: {} ({} imported)\n", s.runs, s.n_values,
+                     s.packings, s.imported);
+  out << fmt::format(
+      "duplicates: {} ({} runs with a repeated (n, seed), {} packings with a "
+      "repeated (n, contact graph, d to 12 digits))\n",
+      c.duplicates(), s.duplicate_runs, s.duplicate_packings);
+}
+
+void render_json(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+  const auto& s = c.stats;
+  emit(out, {{"db", c.db},
+             {"schema_version", c.schema_version},
+             {"integrity", s.integrity},
+             {"runs", s.runs},
+             {"n_values", s.n_values},
+             {"packings", s.packings},
+             {"imported", s.imported},
+             {"duplicates", c.duplicates()},
+             {"duplicate_runs", s.duplicate_runs},
+             {"duplicate_packings", s.duplicate_packings},
+             {"seconds", c.seconds}});
+}
+
+void render_csv(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+  const auto& s = c.stats;
+  row(out, {"db", "integrity", "runs", "n_values", "packings", "imported", "duplicates",
+            "duplicate_runs", "duplicate_packings"});
+  row(out, {c.db, s.integrity, integer(s.runs), integer(s.n_values), integer(s.packings),
+            integer(s.imported), integer(c.duplicates()), integer(s.duplicate_runs),
+            integer(s.duplicate_packings)});
+}
+
+// ----- tripack db import ----------------------------------------------------------------------
+
+void render_text(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+  for (const auto& x : r.packings)
+    out << fmt::format("{}: n = {}, d = {} ({} as read), {} bonds, {} rattlers, certified; {} {}\n",
+                       x.file, x.n, x.d, x.d_file, x.bonds, x.rattlers.size(),
+                       x.added ? "stored as" : "already stored (nothing changed) as", x.label);
+  out << fmt::format("{} file{} into {}: {} stored, {} already there, {:.1f} s\n",
+                     r.packings.size(), r.packings.size() == 1 ? "" : "s", r.db, r.added, r.already,
+                     r.seconds);
+}
+
+void render_json(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+  json files = json::array();
+  for (const auto& x : r.packings)
+    files.push_back({{"file", x.file},
+                     {"source", x.source},
+                     {"layout", x.layout},
+                     {"convention", std::string(convention_name(x.convention))},
+                     {"n", x.n},
+                     {"d", x.d},
+                     {"d_file", x.d_file},
+                     {"bonds", x.bonds},
+                     {"rattlers", x.rattlers.size()},
+                     {"rattler_indices", x.rattlers},
+                     {"certified", true},
+                     {"verdict", x.verdict},
+                     {"graph_hash", x.graph_hash},
+                     {"stored", x.added},
+                     {"label", x.label},
+                     {"warnings", x.warnings},
+                     {"seconds", x.seconds}});
+  emit(out, {{"db", r.db},
+             {"files", std::move(files)},
+             {"stored", r.added},
+             {"already", r.already},
+             {"seconds", r.seconds}});
+}
+
+void render_csv(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+  row(out, {"file", "n", "d", "d_file", "bonds", "rattlers", "stored", "label", "graph_hash"});
+  for (const auto& x : r.packings)
+    row(out, {x.file, integer(x.n), x.d, x.d_file, integer(x.bonds), integer(x.rattlers.size()),
+              flag(x.added), x.label, x.graph_hash});
+}
+
+}  // namespace tripack::report
