@@ -15,6 +15,7 @@ namespace {
 store::OpenOptions for_reading() {
   store::OpenOptions options;
   options.create = false;
+  options.allow_read_only = true;
   return options;
 }
 

@@ -279,10 +279,14 @@ ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
     sqlite3_close(db);
     throw StoreError(fmt::format("cannot open database {} ({})", path, detail));
   }
+  if (sqlite3_db_readonly(db, "main") == 1) {
+    sqlite3_close(db);
+    if (!options.allow_read_only)
+      throw StoreError(fmt::format("cannot write to database {} (read-only)", path));
+    return open_read_only(path, options);
+  }
   ResultsDb out(path, db);
   sqlite3_busy_timeout(db, options.busy_timeout_ms);
-  if (sqlite3_db_readonly(db, "main") == 1)
-    throw StoreError(fmt::format("cannot write to database {} (read-only)", path));
   exec(db, path, "PRAGMA synchronous=NORMAL");
   // Reading the schema is the first access to the file: a text file fails here (not a database).
   const long long tables = table_count(db, path);
@@ -325,6 +329,49 @@ ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
   // Outside any transaction (the pragma is a no-op inside one).
   exec(db, path, "PRAGMA foreign_keys=ON");
   return out;
+}
+
+// A file this process cannot write, opened for reading only. A WAL reader needs the -shm file
+// beside the database; where it cannot be created (a read-only directory), the file is read as
+// immutable (no locks: right for read-only media, where nobody writes it).
+ResultsDb ResultsDb::open_read_only(const std::string& path, const OpenOptions& options) {
+  std::string uri = "file:";
+  for (const char c : path)
+    uri += (c == '?' || c == '#' || c == '%')
+               ? fmt::format("%{:02X}", static_cast<unsigned>(static_cast<unsigned char>(c)))
+               : std::string(1, c);
+  for (const bool immutable : {false, true}) {
+    sqlite3* db = nullptr;
+    const std::string name = immutable ? uri + "?immutable=1" : uri;
+    if (sqlite3_open_v2(name.c_str(), &db, SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr) !=
+        SQLITE_OK) {
+      const std::string detail = db ? sqlite3_errmsg(db) : "out of memory";
+      sqlite3_close(db);
+      throw StoreError(fmt::format("cannot open database {} ({})", path, detail));
+    }
+    sqlite3_busy_timeout(db, options.busy_timeout_ms);
+    const int probe =
+        sqlite3_exec(db, "SELECT COUNT(*) FROM sqlite_master", nullptr, nullptr, nullptr);
+    if (probe != SQLITE_OK && !immutable) {  // e.g. SQLITE_READONLY_CANTINIT: no -shm
+      sqlite3_close(db);
+      continue;
+    }
+    ResultsDb out(path, db);
+    const auto version = schema_version(db, path);  // a text file fails here
+    if (!version)
+      throw StoreError(
+          fmt::format("{} is not a tripack database (read-only, without tripack's "
+                      "tables)",
+                      path));
+    if (*version == "1")
+      throw StoreError(
+          fmt::format("database {} has schema version 1 and is read-only here: "
+                      "open it once with write access to migrate it",
+                      path));
+    if (*version != std::to_string(kSchemaVersion)) wrong_version(path, *version);
+    return out;
+  }
+  throw StoreError(fmt::format("cannot open database {} (read-only)", path));
 }
 
 ResultsDb::ResultsDb(std::string path, sqlite3* db) : path_(std::move(path)), db_(db) {}

@@ -82,6 +82,9 @@ struct OpenOptions {
   int busy_timeout_ms = 5000;  // wait this long for a lock held by another writer
   // false: the file must exist (the read commands never create an empty database).
   bool create = true;
+  // true: a file this process cannot write is still read (the read commands: a database on
+  // read-only media or of another user); writing to it then fails with "read-only".
+  bool allow_read_only = false;
 };
 
 class ResultsDb {
@@ -112,6 +115,7 @@ class ResultsDb {
 
  private:
   ResultsDb(std::string path, sqlite3* db);
+  static ResultsDb open_read_only(const std::string& path, const OpenOptions& options);
   std::string path_;
   sqlite3* db_ = nullptr;
 };

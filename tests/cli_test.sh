@@ -347,7 +347,43 @@ if command -v sqlite3 >/dev/null || command -v python3 >/dev/null; then
   expect_error "db import: a locked database" "locked" db import "$ctmp/t11a.unit-triangle.json" --db "$cdb"
   expect_output "db check reads while another process writes" "integrity ok" db check --db "$cdb"
   wait
+  hold_lock "$cdb" 8
+  expect_error "campaign on a locked database" "locked" campaign --n 10 --runs 4 --db "$cdb"
+  wait
 fi
+# A read-only database (a file and directory this user cannot write; root ignores permissions,
+# so as root the commands run as nobody through setpriv): the read commands work, a campaign or
+# an import is refused in one line, and the file is unchanged.
+rodir=$(mktemp -d)
+cp "$ctmp/copy.db" "$rodir/ro.db"
+chmod 755 "$rodir"
+chmod 444 "$rodir/ro.db"
+as_reader=()
+if [ "$(id -u)" -eq 0 ]; then
+  command -v setpriv >/dev/null && as_reader=(setpriv --reuid=65534 --regid=65534 --clear-groups)
+fi
+if [ "$(id -u)" -ne 0 ] || [ ${#as_reader[@]} -gt 0 ]; then
+  before=$(md5sum <"$rodir/ro.db")
+  ro_err=$(mktemp)
+  if "${as_reader[@]}" "$TRIPACK" db best --db "$rodir/ro.db" 2>"$ro_err" | grep -q t11a &&
+     "${as_reader[@]}" "$TRIPACK" db check --db "$rodir/ro.db" >/dev/null 2>>"$ro_err" &&
+     "${as_reader[@]}" "$TRIPACK" db export 11 --db "$rodir/ro.db" >/dev/null 2>>"$ro_err"; then
+    pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: read commands on a read-only database: $(cat "$ro_err")"; fi
+  cp "$ctmp/t11a.unit-triangle.json" "$rodir/t11a.json"
+  chmod 644 "$rodir/t11a.json"
+  for cmd in "campaign --n 12 --runs 2" "db import $rodir/t11a.json"; do
+    # shellcheck disable=SC2086
+    "${as_reader[@]}" "$TRIPACK" $cmd --db "$rodir/ro.db" >/dev/null 2>"$ro_err"
+    rc=$?
+    if [ "$rc" -ne 0 ] && [ "$(wc -l <"$ro_err")" -eq 1 ] && grep -q "read-only" "$ro_err"; then
+      pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $cmd on a read-only database: rc=$rc $(cat "$ro_err")"; fi
+  done
+  if [ "$(md5sum <"$rodir/ro.db")" = "$before" ]; then
+    pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: the read-only database changed"; fi
+  rm -f "$ro_err"
+fi
+chmod 755 "$rodir/ro.db"
+rm -rf "$rodir"
 rm -rf "$ctmp"
 rm -f "$cdb" "$cdb-wal" "$cdb-shm" "$cdb.txt"
 
