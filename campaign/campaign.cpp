@@ -164,7 +164,7 @@ void serve_ranks(RankLink& link, Ledger* ledger) {
   while (working > 0) {
     const auto report = link.poll_report();
     if (!report) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
       continue;
     }
     if (ledger && !report->run.empty()) {
