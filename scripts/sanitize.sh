@@ -5,7 +5,8 @@
 #       tripack_tests and tripack, and runs the threaded tests (the threaded billiards searches,
 #       the campaigns with 2 threads, the explorer and the accuracy study's 2-thread searches)
 #       plus tests/cli_test.sh (billiards/compare/campaign --threads 2, the progress ticker
-#       thread on a pty) with TSAN_OPTIONS=halt_on_error=1.
+#       thread on a pty) and a 2-thread `tripack campaign` interrupted by SIGINT then resumed,
+#       all with TSAN_OPTIONS=halt_on_error=1.
 # asan: configures into build-asan/ with -fsanitize=address,undefined
 #       -fno-sanitize-recover=undefined (-O1 -g), builds the same targets and runs the whole
 #       GoogleTest suite and the cli test through ctest (the explore test, which needs Chromium
@@ -17,7 +18,8 @@
 # scripts/tsan.supp, if it exists) list the reports inside them that are not ours, each entry
 # saying why; our own code is never suppressed.
 # Environment: SAN_CXX / SAN_CC (default g++ / gcc), SAN_JOBS (build jobs, default 2),
-# SAN_TEST_JOBS (ctest jobs for asan, default 1), TSAN_FILTER (gtest filter for tsan).
+# SAN_TEST_JOBS (ctest jobs for asan, default 1), TSAN_FILTER (gtest filter for tsan),
+# SAN_INTERRUPT_AFTER (seconds before the campaign's SIGINT, default 1).
 set -euo pipefail
 
 mode=${1:-all}
@@ -79,6 +81,33 @@ run_tsan() {
   t0=$SECONDS
   echo "== tsan: tests/cli_test.sh (threaded billiards, compare, campaign; progress ticker)"
   TSAN_OPTIONS=$opts bash "$root/tests/cli_test.sh" "$dir/tripack" "$root/tests/data" || rc=1
+  echo "   $((SECONDS - t0)) s"
+  t0=$SECONDS
+  echo "== tsan: a 2-thread campaign interrupted by SIGINT (as Ctrl-C), then resumed"
+  local db="$dir/san-campaign.db" out1="$dir/san-campaign-1.out" out2="$dir/san-campaign-2.out"
+  rm -f "$db" "$db-wal" "$db-shm"
+  TSAN_OPTIONS=$opts "$dir/tripack" campaign --n 20..60 --runs 2 --threads 2 --db "$db" \
+    >"$out1" 2>&1 &
+  local pid=$! rc1=0 rc2=0
+  sleep "${SAN_INTERRUPT_AFTER:-1}"
+  kill -INT "$pid" 2>/dev/null || true
+  wait "$pid" || rc1=$?
+  TSAN_OPTIONS=$opts "$dir/tripack" campaign --n 20..60 --runs 2 --threads 2 --db "$db" \
+    >"$out2" 2>&1 || rc2=$?
+  # "campaign 20..60 x 2 runs: 82 units, A already in DB, B recorded now ...": the interrupted
+  # run's units are kept and none is repeated (A + B = 82, A = what the first run recorded).
+  local first second
+  first=$(grep -oE '[0-9]+ recorded now' "$out1" | grep -oE '^[0-9]+' || echo "?")
+  second=$(grep -oE '[0-9]+ already in .*, [0-9]+ recorded now' "$out2" |
+    sed -E 's/^([0-9]+) already in .*, ([0-9]+) recorded now/\1 \2/' || true)
+  echo "   first run exit $rc1 (130 = interrupted), $first recorded; rerun exit $rc2," \
+    "already + recorded = ${second:-?}"
+  if [[ $rc1 -ne 130 && $rc1 -ne 0 ]] || [[ $rc2 -ne 0 ]] ||
+     [[ $second != "$first $((82 - ${first//[!0-9]/0}))" ]]; then
+    echo "   FAIL: interrupted campaign"; cat "$out1" "$out2"; rc=1
+  fi
+  [[ $rc1 -eq 130 ]] || echo "   note: the first run finished before the signal: lower SAN_INTERRUPT_AFTER"
+  rm -f "$db" "$db-wal" "$db-shm"
   echo "   $((SECONDS - t0)) s"
   report_logs "$dir" || { echo "tsan: REPORTS (above)"; rc=1; }
   if [[ $rc -eq 0 ]]; then echo "tsan: clean"; else echo "tsan: FAILED"; status=1; fi
