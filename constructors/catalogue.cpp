@@ -245,15 +245,36 @@ long long Catalogue::n_of(const ClassInfo& c, long k, long p) const {
   }
 }
 
+void Catalogue::check_scan_step(const ClassInfo& c, char var, long at,
+                                std::optional<long long> previous, long long n) {
+  const std::string v(1, var);
+  if (n < 1)
+    throw CatalogueError(c.id + ".n is " + std::to_string(n) + " at " + v + " = " +
+                         std::to_string(at) + " (a class's n must be at least 1)");
+  if (previous && n <= *previous)
+    throw CatalogueError(c.id + ".n does not grow with " + v + ": " + std::to_string(*previous) +
+                         " at " + v + " = " + std::to_string(at - 1) + ", " + std::to_string(n) +
+                         " at " + v + " = " + std::to_string(at));
+}
+
 std::vector<Member> Catalogue::classify(long long N) const {
   std::vector<Member> out;
   for (const auto& c : classes_) {
     auto n_at = [&](long k, long p) { return c.n.eval<long long>(integer_env(k, p)); };
     // n grows strictly with k (and with p), so each scan stops once it passes N.
+    std::optional<long long> first_n;  // n(k_min, p - 1)
     for (long p = c.has_p ? c.p_min : 0;; ++p) {
-      if (c.has_p && n_at(c.k_min, p) > N) break;
+      if (c.has_p) {
+        const long long first = n_at(c.k_min, p);
+        check_scan_step(c, 'p', p, first_n, first);
+        first_n = first;
+        if (first > N) break;
+      }
+      std::optional<long long> previous;
       for (long k = c.k_min; !c.k_max || k <= c.k_max; ++k) {
         const long long n = n_at(k, p);
+        check_scan_step(c, 'k', k, previous, n);
+        previous = n;
         if (n == N) out.push_back({&c, k, p, n});
         if (n >= N) break;
       }

@@ -75,8 +75,16 @@ class Catalogue {
   // n(k[, p]) in integers. Throws CatalogueError for parameters outside the class's range.
   long long n_of(const ClassInfo& c, long k, long p) const;
   void check_parameters(const ClassInfo& c, long k, long p) const;
-  // Every (class, k[, p]) whose n equals N, in catalogue order.
+  // Every (class, k[, p]) whose n equals N, in catalogue order. Throws CatalogueError for a class
+  // whose n breaks check_scan_step.
   std::vector<Member> classify(long long N) const;
+  // The scans over a class's members (classify; pipeline::class_members_up_to) stop once n passes
+  // a bound, so they need n >= 1 growing strictly with k (and, at k_min, with p). Throws
+  // CatalogueError naming the class when `n` (at var = at) breaks that, `previous` being n at
+  // var = at - 1 (nullopt at the scan's start): a malformed catalogue (fuzzing: a mutated hexagonal
+  // class with n = "Delta(p)", the same for every k) would otherwise be scanned forever.
+  static void check_scan_step(const ClassInfo& c, char var, long at,
+                              std::optional<long long> previous, long long n);
   // The variant id to use ("" when the class has none) after validating `requested`.
   std::string resolve_variant(const ClassInfo& c, long k, const std::string& requested) const;
   // All variant ids valid at this k (families expanded).

@@ -3,7 +3,8 @@
 #   bash scripts/fuzz.sh [SECONDS_PER_TARGET]   # default 60 s per target
 #   bash scripts/fuzz.sh --smoke                # 10 s per target (CI)
 # Configures fuzz/ into build-fuzz/ with clang, builds the targets, runs each one on a copy of
-# its seed corpus (fuzz/corpus/<target>/; the committed seeds are never modified) and prints one
+# its seed corpus (fuzz/corpus/<target>/ plus the past findings' reproducers in
+# fuzz/findings/<target>/; the committed files are never modified) and prints one
 # line per target: "N runs, no crash" or the reproducer file. Exits non-zero on any finding
 # (crash, sanitizer report, leak, timeout, out-of-memory).
 # Environment: FUZZ_TARGETS="fuzz_points ..." to run a subset, FUZZ_JOBS (build jobs, default 2),
@@ -46,6 +47,9 @@ for t in $targets; do
   rm -rf "$run"
   mkdir -p "$run/corpus" "$run/artifacts"
   cp "$root/fuzz/corpus/$t/"* "$run/corpus/"
+  # Past findings (fuzz/findings/<target>/) join the start corpus, so every run, the CI smoke
+  # included, replays them first (inputs longer than the target's max_len are cut to it).
+  if [[ -d $root/fuzz/findings/$t ]]; then cp "$root/fuzz/findings/$t/"* "$run/corpus/"; fi
   log="$run/fuzz.log"
   set +e
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \

@@ -4,9 +4,24 @@
 // neighbourhood operations (building all lists, growing their storage).
 #include "sim/neighbourhood.hpp"
 
+// ThreadSanitizer instruments the ifunc resolver that target_clones generates; the dynamic
+// loader runs that resolver before the TSan runtime is initialised, and the program crashes at
+// start (GCC 12 and clang 14; llvm/llvm-project#163369). A TSan build (scripts/sanitize.sh)
+// compiles the default version only: the kernel touches no shared state, so nothing is lost.
+#if defined(__SANITIZE_THREAD__)
+#define TRIPACK_PAIR_TIMES_CLONES
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define TRIPACK_PAIR_TIMES_CLONES
+#endif
+#endif
+#ifndef TRIPACK_PAIR_TIMES_CLONES
+#define TRIPACK_PAIR_TIMES_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+
 namespace tripack::sim_detail {
 
-__attribute__((target_clones("avx2", "default"))) void pair_times(
+TRIPACK_PAIR_TIMES_CLONES void pair_times(
     int m, const Disk* __restrict disks, const int* __restrict list, Vec2 xi, Vec2 vi, double now,
     double D, double g, double* __restrict t) {
   for (int k = 0; k < m; ++k) {

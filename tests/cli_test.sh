@@ -53,6 +53,7 @@ expect_error "missing --k" "needs --k" build four-delta
 expect_error "N in no class" "no class of the catalogue contains n = 23" classify 23
 expect_error "build --n in no class" "contains n = 32" build --n 32
 expect_error "malformed classes.yaml" "malformed_classes.yaml" --catalogue "$DATA/malformed_classes.yaml" classes
+expect_error "classes.yaml whose n does not grow" "does not grow with k" --catalogue "$DATA/n_not_growing_classes.yaml" classify 22
 expect_error "missing classes.yaml" "cannot read catalogue" --catalogue /nonexistent.yaml classes
 expect_error "non-numeric k" "k" build four-delta --k two
 expect_error "bad k range" "--k expects" check-formula four-delta --k 3..x

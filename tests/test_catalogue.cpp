@@ -113,5 +113,36 @@ TEST(Catalogue, MalformedYamlIsACatalogueError) {
   EXPECT_THROW(Catalogue::load("/nonexistent/classes.yaml"), CatalogueError);
 }
 
+// fuzz/findings/fuzz_catalogue/timeout-n-not-growing.yaml: classify scans k (and p) until n passes
+// N, so an n that does not grow (there a mutated hexagonal class with n = "Delta(p)") hung it.
+// Such a class is now a one-line CatalogueError naming it; well-formed classes are unaffected.
+TEST(Catalogue, ClassifyRefusesAnNThatDoesNotGrowInsteadOfScanningForever) {
+  auto one_class = [](const std::string& fields) {
+    return Catalogue::parse("classes:\n  - {id: a, display: A, builder: {name: x}, " + fields +
+                            "}\n");
+  };
+  auto refused = [](const Catalogue& c, const std::string& needle) {
+    try {
+      (void)c.classify(22);
+    } catch (const CatalogueError& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+      EXPECT_NE(what.find(needle), std::string::npos) << what;
+      return;
+    }
+    ADD_FAILURE() << "classify(22) accepted it (expected: " << needle << ")";
+  };
+  refused(one_class("n: 'Delta(p)', k_min: 2"), "a.n does not grow with k: 1 at k = 2, 1 at k = 3");
+  refused(one_class("n: '20-k'"), "a.n does not grow with k: 19 at k = 1, 18 at k = 2");
+  refused(one_class("n: '5+0*k*p'"), "a.n does not grow with k");
+  refused(one_class("n: 'k+0*p', k_max: 2"), "a.n does not grow with p: 1 at p = 1, 1 at p = 2");
+  refused(one_class("n: 'k-1000000000000'"), "a.n is -999999999999 at k = 1");
+  // Growing n: classify works as before, with or without p.
+  const auto k_only = one_class("n: '2*k+1'").classify(21);
+  ASSERT_EQ(k_only.size(), 1u);
+  EXPECT_EQ(k_only[0].k, 10);
+  EXPECT_EQ(one_class("n: 'k*p'").classify(6).size(), 4u);  // (6,1) (3,2) (2,3) (1,6)
+}
+
 }  // namespace
 }  // namespace tripack

@@ -137,5 +137,21 @@ TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
   EXPECT_EQ(result.packings.size(), 5u);
 }
 
+// The explorer's member list scans k and p like Catalogue::classify: a class whose n does not grow
+// (fuzz/findings/fuzz_catalogue/timeout-n-not-growing.yaml) is a CatalogueError, not an endless
+// loop filling memory; the real catalogue's members are all listed.
+TEST(Explore, ClassMembersOfAClassWhoseNDoesNotGrowAreACatalogueError) {
+  const Catalogue flat = Catalogue::parse(
+      "classes:\n  - {id: flat, display: F, n: 'Delta(p)', k_min: 2, builder: {name: x}}\n");
+  EXPECT_THROW(pipeline::class_members_up_to(flat, 60), CatalogueError);
+  const Catalogue shrinking =
+      Catalogue::parse("classes:\n  - {id: s, display: S, n: '50-k', builder: {name: x}}\n");
+  EXPECT_THROW(pipeline::class_members_up_to(shrinking, 60), CatalogueError);
+  const auto members = pipeline::class_members_up_to(catalogue(), 60);
+  EXPECT_FALSE(members.empty());
+  for (const auto& m : members)
+    EXPECT_LE(catalogue().n_of(catalogue().find(m.class_id), m.k, m.p), 60) << m.class_id;
+}
+
 }  // namespace
 }  // namespace tripack
