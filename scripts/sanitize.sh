@@ -109,6 +109,12 @@ run_tsan() {
   [[ $rc1 -eq 130 ]] || echo "   note: the first run finished before the signal: lower SAN_INTERRUPT_AFTER"
   rm -f "$db" "$db-wal" "$db-shm"
   echo "   $((SECONDS - t0)) s"
+  if command -v mpirun >/dev/null; then
+    echo "== tsan: tests/mpi_test.sh (rank 0's worker thread beside its MPI thread; a killed rank)"
+    t0=$SECONDS
+    TSAN_OPTIONS=$opts bash "$root/tests/mpi_test.sh" "$dir/tripack" || rc=1
+    echo "   $((SECONDS - t0)) s"
+  fi
   report_logs "$dir" || { echo "tsan: REPORTS (above)"; rc=1; }
   if [[ $rc -eq 0 ]]; then echo "tsan: clean"; else echo "tsan: FAILED"; status=1; fi
 }
