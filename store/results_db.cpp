@@ -420,11 +420,25 @@ bool ResultsDb::record(const RunRecord& run) {
       StoredPacking p = *run.packing;
       if (const auto id = find_packing(db_, path_, p)) {
         packing_id = *id;
-        // An imported packing a run finds gets its first seed now.
+        // first_seed is the smallest seed that found it, whatever order the units finished in
+        // (threads, ranks); an imported packing a run finds gets its first seed now.
         Statement bump(db_, path_,
-                       "UPDATE packings SET runs = runs + 1, first_seed = COALESCE(first_seed, "
-                       "?2) WHERE id = ?1");
+                       "UPDATE packings SET runs = runs + 1, first_seed = MIN(COALESCE(first_seed, "
+                       "?2), ?2) WHERE id = ?1");
         bump.bind(1, packing_id).bind(2, static_cast<long long>(run.seed)).step();
+        // A campaign's packing keeps the coordinates of that smallest seed's run, so the
+        // database is the same for any order of the units; an import keeps the file's.
+        Statement adopt(db_, path_,
+                        "UPDATE packings SET d = ?2, d_value = ?3, points = ?4, bonds = ?5, "
+                        "rattlers = ?6 WHERE id = ?1 AND origin = 'campaign' AND first_seed = ?7");
+        adopt.bind(1, packing_id)
+            .bind(2, p.d)
+            .bind(3, static_cast<double>(std::stold(p.d)))
+            .bind(4, points_text(p.points))
+            .bind(5, bonds_text(p.bonds))
+            .bind(6, ints_text(p.rattlers))
+            .bind(7, static_cast<long long>(run.seed))
+            .step();
       } else {
         p.first_seed = run.seed;
         p.has_seed = true;

@@ -52,6 +52,33 @@ RunRecord run(long long n, std::uint64_t seed, std::optional<StoredPacking> p) {
   return r;
 }
 
+// Threads and MPI ranks finish units in any order; the stored packing must not depend on it: a
+// packing found by several runs keeps the smallest seed and that run's coordinates and d.
+TEST(Store, APackingKeepsItsSmallestSeedWhateverOrderTheUnitsFinishIn) {
+  auto found_by = [](std::uint64_t seed) {
+    StoredPacking p = packing(3, "1.0000000000000" + std::to_string(seed), "h3");
+    p.points[2].x += static_cast<long double>(seed) * 1e-15L;  // each run's own rounding
+    return p;
+  };
+  std::vector<std::vector<StoredPacking>> stored;
+  for (const std::vector<std::uint64_t>& order :
+       {std::vector<std::uint64_t>{2, 5, 9}, std::vector<std::uint64_t>{9, 5, 2},
+        std::vector<std::uint64_t>{5, 9, 2}}) {
+    const std::string path = fresh_path("order.db");
+    ResultsDb db = ResultsDb::open(path);
+    for (const auto seed : order) EXPECT_TRUE(db.record(run(3, seed, found_by(seed))));
+    stored.push_back(db.packings(3));
+  }
+  for (const auto& packings : stored) {
+    ASSERT_EQ(packings.size(), 1u);
+    EXPECT_EQ(packings[0].first_seed, 2u);
+    EXPECT_EQ(packings[0].runs, 3);
+    EXPECT_EQ(packings[0].d, found_by(2).d);
+    EXPECT_EQ(packings[0].points[2].x, stored[0][0].points[2].x);
+    EXPECT_NEAR(static_cast<double>(packings[0].points[2].x - found_by(2).points[2].x), 0, 1e-20);
+  }
+}
+
 TEST(Store, RecordsUnitsOnceAndDeduplicatesPackings) {
   const std::string path = fresh_path("records.db");
   {
