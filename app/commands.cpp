@@ -60,7 +60,8 @@ void print_result(const Result& result, const OutputOptions& out) {
   std::cout << buffer.str() << std::flush;
 }
 
-std::pair<long, long> parse_range(const std::string& s) {
+// "K" or "A..B" given to `option` (named in the errors).
+std::pair<long, long> parse_range(const std::string& s, const std::string& option) {
   auto to_long = [&](const std::string& t) {
     std::size_t used = 0;
     long v = 0;
@@ -70,7 +71,7 @@ std::pair<long, long> parse_range(const std::string& s) {
       used = 0;
     }
     if (used == 0 || used != t.size())
-      throw std::invalid_argument("--k expects K or A..B, got '" + s + "'");
+      throw std::invalid_argument(option + " expects a number or A..B, got '" + s + "'");
     return v;
   };
   const auto dots = s.find("..");
@@ -79,7 +80,7 @@ std::pair<long, long> parse_range(const std::string& s) {
     return {k, k};
   }
   const long a = to_long(s.substr(0, dots)), b = to_long(s.substr(dots + 2));
-  if (b < a) throw std::invalid_argument("--k range " + s + " is empty");
+  if (b < a) throw std::invalid_argument(option + " range " + s + " is empty");
   return {a, b};
 }
 
@@ -253,7 +254,7 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
 }
 
 int cmd_check_formula(const GlobalOptions& g, const CheckFormulaOptions& o) {
-  const auto [k_first, k_last] = parse_range(o.k_range);
+  const auto [k_first, k_last] = parse_range(o.k_range, "--k");
   const auto check = pipeline::check_formula(load_catalogue(g), o.class_id, k_first, k_last, o.p);
   print_result(check, o.out);
   if (!check.all_ok) throw std::runtime_error("check-formula found mismatches");
@@ -424,7 +425,7 @@ int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
 }
 
 int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
-  const auto [first, last] = parse_range(o.n_range);
+  const auto [first, last] = parse_range(o.n_range, "--n");
   campaign::CampaignRequest request;
   request.n_first = first;
   request.n_last = last;

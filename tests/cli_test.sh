@@ -272,6 +272,8 @@ expect_output "campaign records units" "6 recorded now" campaign --n 10..11 --ru
 expect_output "campaign rerun repeats nothing" "6 already in" campaign --n 10..11 --runs 3 --db "$cdb"
 expect_output "db best, one line per n" "t11a" db best --db "$cdb"
 expect_error "campaign range without n >= 2" "has no n >= 2" campaign --n 0..1 --db "$cdb"
+expect_error "campaign range backwards" "--n range 40..30 is empty" campaign --n 40..30 --db "$cdb"
+expect_error "campaign range not numbers" "--n expects" campaign --n 16..x --db "$cdb"
 printf 'x y\n0.1 0.2\n' >"$cdb.txt"
 expect_error "db best on a text file" "not a tripack database" db best --db "$cdb.txt"
 expect_error "campaign on a text file" "not a tripack database" campaign --n 5 --db "$cdb.txt"
