@@ -17,6 +17,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #include "campaign/campaign.hpp"
 #include "campaign/import.hpp"
@@ -481,6 +482,13 @@ int cmd_db_best(const DbOptions& o) {
   if (o.n && table.rows.empty())
     throw std::invalid_argument(fmt::format("no packings of n = {} in {}", o.n, o.db));
   print_result(table, o.out);
+  return 0;
+}
+
+int cmd_db_prune(const DbPruneOptions& o) {
+  auto [first, last] = std::pair<long long, long long>{0, std::numeric_limits<long long>::max()};
+  if (!o.n_range.empty()) std::tie(first, last) = parse_range(o.n_range, "--n");
+  print_result(campaign::prune_database(o.db, o.keep, first, last), o.out);
   return 0;
 }
 

@@ -138,6 +138,13 @@ struct DbImportOptions {
   OutputOptions out;
 };
 int cmd_db_import(const DbImportOptions& o);
+struct DbPruneOptions {
+  std::string db = "tripack.db";
+  long long keep = 0;   // packings kept per n (required)
+  std::string n_range;  // "A..B" or "N"; empty: every n
+  OutputOptions out;
+};
+int cmd_db_prune(const DbPruneOptions& o);
 
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o);
 

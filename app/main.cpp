@@ -170,6 +170,7 @@ struct DbCommandOptions {
   DbCheckOptions check;
   DbExportOptions exp;
   DbImportOptions imp;
+  DbPruneOptions prune;
 };
 
 Action add_db(CLI::App& cli, DbCommandOptions& o) {
@@ -222,7 +223,19 @@ Action add_db(CLI::App& cli, DbCommandOptions& o) {
                   std::string(conventions) + "; default: as the file declares, else unit-triangle");
   add_output_flags(imp, o.imp.out);
 
+  auto* prune = c->add_subcommand(
+      "prune",
+      "Keep the best K packings of every n (the runs stay, so the campaign still skips them) "
+      "and compact the file: for keeping or committing a long campaign's database");
+  prune->add_option("--keep", o.prune.keep, "packings kept per n")
+      ->required()
+      ->check(CLI::Range(1LL, 1000000000LL));
+  prune->add_option("--n", o.prune.n_range, "only n in A..B (or N); default: every n");
+  prune->add_option("--db", o.prune.db, db_help);
+  add_output_flags(prune, o.prune.out);
+
   return [=, &o] {
+    if (*prune) return cmd_db_prune(o.prune);
     if (*best) return cmd_db_best(o.best);
     if (*check) return cmd_db_check(o.check);
     if (*exp) return cmd_db_export(o.exp);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -92,6 +93,55 @@ std::vector<RankedPacking> select_packings(const std::string& path, long long n,
         rank, n, ranked.size(), ranked.size() == 1 ? "" : "s", path, ranked.size(),
         ranked.front().label, ranked.back().label));
   return {std::move(ranked[static_cast<std::size_t>(rank - 1)])};
+}
+
+namespace {
+
+std::uintmax_t file_bytes(const std::string& path) {
+  std::uintmax_t bytes = 0;
+  for (const char* suffix : {"", "-wal"}) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(path + suffix, error);
+    if (!error) bytes += size;
+  }
+  return bytes;
+}
+
+}  // namespace
+
+PruneResult prune_database(const std::string& path, long long keep, long long n_first,
+                           long long n_last) {
+  if (keep < 1) throw std::invalid_argument("--keep must be at least 1");
+  const auto start = std::chrono::steady_clock::now();
+  PruneResult result;
+  result.db = path;
+  result.keep = keep;
+  store::OpenOptions options;
+  options.create = false;
+  store::ResultsDb db = store::ResultsDb::open(path, options);
+  result.bytes_before = file_bytes(path);
+  std::vector<long long> doomed;
+  for (const auto& best : db.best_per_n()) {
+    if (best.n < n_first || best.n > n_last) continue;
+    ++result.n_values;
+    const auto ranked = ranked_packings(db, best.n);
+    for (const auto& r : ranked) {
+      if (static_cast<long long>(r.rank) <= keep)
+        ++result.kept;
+      else
+        doomed.push_back(r.packing.id);
+    }
+  }
+  result.removed = static_cast<long long>(doomed.size());
+  db.remove_packings(doomed);
+  try {
+    db.compact();
+  } catch (const store::StoreError& e) {
+    result.not_compacted = e.what();
+  }
+  result.bytes_after = file_bytes(path);
+  result.seconds = seconds_since(start);
+  return result;
 }
 
 }  // namespace tripack::campaign

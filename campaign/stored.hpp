@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -53,5 +54,23 @@ DbCheck check_database(const std::string& path);
 // store::StoreError when there is no database.
 std::vector<RankedPacking> select_packings(const std::string& path, long long n, long long rank,
                                            bool all);
+
+// `tripack db prune`: keeps the best `keep` stored packings of every n in [n_first, n_last]
+// (ranked_packings' order) and deletes the others; every run stays, so a rerun of the campaign
+// still skips it (a run that later finds a deleted packing stores it anew). Then compacts the
+// file (VACUUM, WAL folded in) so that it alone holds everything: long campaigns (the atlas)
+// keep and commit their database this way. Throws like ResultsDb::open for the database and
+// std::invalid_argument for keep < 1.
+struct PruneResult {
+  std::string db;
+  long long keep = 0;
+  long long n_values = 0;  // values of n in the range with stored packings
+  long long kept = 0, removed = 0;
+  std::uintmax_t bytes_before = 0, bytes_after = 0;  // the file with its WAL
+  std::string not_compacted;                         // why compaction failed (the deletions stand)
+  double seconds = 0;
+};
+PruneResult prune_database(const std::string& path, long long keep, long long n_first,
+                           long long n_last);
 
 }  // namespace tripack::campaign

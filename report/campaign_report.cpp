@@ -240,4 +240,34 @@ void render_csv(std::ostream& out, const campaign::ImportResult& r, const Render
               flag(x.added), x.label, x.graph_hash});
 }
 
+// ----- tripack db prune -----------------------------------------------------------------------
+
+void render_text(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+  out << fmt::format(
+      "{}: kept {} packings (at most {} per n over {} values of n), removed {}; {:.1f} MB -> "
+      "{:.1f} MB{}; {:.1f} s\n",
+      r.db, r.kept, r.keep, r.n_values, r.removed, static_cast<double>(r.bytes_before) / 1e6,
+      static_cast<double>(r.bytes_after) / 1e6,
+      r.not_compacted.empty() ? "" : " (not compacted: " + r.not_compacted + ")", r.seconds);
+}
+
+void render_json(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+  emit(out, {{"db", r.db},
+             {"keep", r.keep},
+             {"n_values", r.n_values},
+             {"kept", r.kept},
+             {"removed", r.removed},
+             {"bytes_before", r.bytes_before},
+             {"bytes_after", r.bytes_after},
+             {"not_compacted", r.not_compacted},
+             {"seconds", r.seconds}});
+}
+
+void render_csv(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+  row(out, {"db", "keep", "n_values", "kept", "removed", "bytes_before", "bytes_after"});
+  row(out, {r.db, integer(r.keep), integer(r.n_values), integer(r.kept), integer(r.removed),
+            integer(static_cast<long long>(r.bytes_before)),
+            integer(static_cast<long long>(r.bytes_after))});
+}
+
 }  // namespace tripack::report

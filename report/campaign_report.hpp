@@ -4,7 +4,8 @@
 //  * `tripack campaign`: CampaignReport (the run's counts and the best of every n in its range);
 //  * `tripack db best`: campaign::BestTable;
 //  * `tripack db check`: campaign::DbCheck;
-//  * `tripack db import`: campaign::ImportResult.
+//  * `tripack db import`: campaign::ImportResult;
+//  * `tripack db prune`: campaign::PruneResult.
 // `tripack db export` writes packing files (report/packing_file.hpp), not a rendering.
 #pragma once
 
@@ -44,5 +45,9 @@ void render_csv(std::ostream& out, const campaign::DbCheck& c, const RenderOptio
 void render_text(std::ostream& out, const campaign::ImportResult& r, const RenderOptions& o);
 void render_json(std::ostream& out, const campaign::ImportResult& r, const RenderOptions& o);
 void render_csv(std::ostream& out, const campaign::ImportResult& r, const RenderOptions& o);
+
+void render_text(std::ostream& out, const campaign::PruneResult& r, const RenderOptions& o);
+void render_json(std::ostream& out, const campaign::PruneResult& r, const RenderOptions& o);
+void render_csv(std::ostream& out, const campaign::PruneResult& r, const RenderOptions& o);
 
 }  // namespace tripack::report

@@ -94,6 +94,11 @@ class Statement {
     if (rc == SQLITE_DONE) return false;
     fail("step");
   }
+  // Ready to run again with new bindings.
+  void reset() {
+    sqlite3_reset(stmt_);
+    sqlite3_clear_bindings(stmt_);
+  }
   long long integer(int c) const { return sqlite3_column_int64(stmt_, c); }
   bool is_null(int c) const { return sqlite3_column_type(stmt_, c) == SQLITE_NULL; }
   double real(int c) const { return sqlite3_column_double(stmt_, c); }
@@ -485,6 +490,29 @@ std::vector<AddOutcome> ResultsDb::add_packings(const std::vector<StoredPacking>
     throw;
   }
   return outcomes;
+}
+
+void ResultsDb::remove_packings(const std::vector<long long>& ids) {
+  exec(db_, path_, "BEGIN IMMEDIATE");
+  try {
+    Statement unlink(db_, path_, "UPDATE runs SET packing_id = NULL WHERE packing_id = ?1");
+    Statement remove(db_, path_, "DELETE FROM packings WHERE id = ?1");
+    for (const long long id : ids) {
+      unlink.bind(1, id).step();
+      unlink.reset();
+      remove.bind(1, id).step();
+      remove.reset();
+    }
+    exec(db_, path_, "COMMIT");
+  } catch (...) {
+    sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+    throw;
+  }
+}
+
+void ResultsDb::compact() {
+  exec(db_, path_, "VACUUM");
+  exec(db_, path_, "PRAGMA wal_checkpoint(TRUNCATE)");
 }
 
 std::vector<StoredPacking> ResultsDb::packings(long long n) const {

@@ -107,6 +107,13 @@ class ResultsDb {
   // Packings that come with no run (db import), all in one transaction: each is added unless the
   // same packing is there already (see AddOutcome); any failure stores none of them.
   std::vector<AddOutcome> add_packings(const std::vector<StoredPacking>& packings);
+  // Deletes these packings in one transaction; the runs that ended in them stay (their outcome
+  // kept, their packing unlinked). A later run that finds one again stores it anew.
+  void remove_packings(const std::vector<long long>& ids);
+  // Folds the WAL into the main file and rebuilds it without free pages (VACUUM), so the file
+  // alone holds everything, as small as it can be: for copying or committing it. Needs no other
+  // connection to be open.
+  void compact();
   std::vector<StoredPacking> packings(long long n) const;  // largest d first
   std::vector<StoredPacking> best_per_n() const;           // one per n, by n
   std::string integrity_check() const;                     // "ok" when sound

@@ -280,6 +280,9 @@ expect_error "campaign on a text file" "not a tripack database" campaign --n 5 -
 expect_output "campaign --json" '"recorded":0' campaign --n 10..11 --runs 3 --db "$cdb" --json
 expect_output "db best --json" '"label":"t11a"' db best 11 --db "$cdb" --json
 expect_output "db check" "integrity ok" db check --db "$cdb"
+expect_output "db prune" "kept 2 packings" db prune --keep 1 --db "$cdb"
+expect_error "db prune without --keep" "--keep is required" db prune --db "$cdb"
+expect_error "db prune of a missing database" "no database" db prune --keep 1 --db "$cdb.missing"
 expect_output "db check --json: no duplicates" '"duplicates":0' db check --db "$cdb" --json
 expect_output "db check --json: runs" '"runs":6' db check --db "$cdb" --json
 # db export / import: the best of n = 11 out in every format and convention, and back in.

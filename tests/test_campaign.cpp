@@ -5,9 +5,11 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "campaign/campaign.hpp"
+#include "campaign/stored.hpp"
 #include "campaign/work_unit.hpp"
 #include "pipeline/billiards_search.hpp"
 
@@ -127,6 +129,47 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
   request.db = fresh_db("never.db");
   EXPECT_THROW(run_campaign(request, nullptr, {}), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(request.db));  // checked before the database is made
+}
+
+// db prune keeps exactly the best K of each n in its range, in ranked_packings' order, leaves
+// every run and the other n alone, and a rerun of the campaign still skips every unit.
+TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
+  CampaignRequest request;
+  request.n_first = 14;
+  request.n_last = 17;
+  request.runs = 12;
+  request.threads = 2;
+  request.db = fresh_db("prune.db");
+  run_campaign(request, nullptr, {});
+  std::map<long long, std::vector<RankedPacking>> before;
+  {
+    const auto db = store::ResultsDb::open(request.db);
+    for (long long n = 14; n <= 17; ++n) before[n] = ranked_packings(db, n);
+  }
+  ASSERT_GT(before[16].size(), 2u);  // something to prune (16 has several local optima)
+  const PruneResult pruned = prune_database(request.db, 2, 15, 16);
+  EXPECT_EQ(pruned.n_values, 2);
+  const auto db = store::ResultsDb::open(request.db);
+  EXPECT_EQ(db.run_count(), 48);
+  long long removed = 0;
+  for (long long n = 14; n <= 17; ++n) {
+    const auto after = ranked_packings(db, n);
+    const bool in_range = n == 15 || n == 16;
+    const std::size_t expected =
+        in_range ? std::min<std::size_t>(2, before[n].size()) : before[n].size();
+    ASSERT_EQ(after.size(), expected) << "n = " << n;
+    removed += static_cast<long long>(before[n].size() - after.size());
+    for (std::size_t r = 0; r < after.size(); ++r) {
+      EXPECT_EQ(after[r].packing.id, before[n][r].packing.id) << "n = " << n;
+      EXPECT_EQ(after[r].packing.points, before[n][r].packing.points);
+    }
+  }
+  EXPECT_EQ(pruned.removed, removed);
+  EXPECT_EQ(db.statistics().integrity, "ok");
+  const CampaignResult again = run_campaign(request, nullptr, {});
+  EXPECT_EQ(again.skipped, 48);
+  EXPECT_EQ(again.recorded, 0);
+  EXPECT_THROW(prune_database(request.db, 0, 2, 100), std::invalid_argument);
 }
 
 }  // namespace
