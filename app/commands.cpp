@@ -19,6 +19,7 @@
 #include <thread>
 #include <tuple>
 
+#include "campaign/atlas.hpp"
 #include "campaign/campaign.hpp"
 #include "campaign/import.hpp"
 #include "campaign/stored.hpp"
@@ -30,6 +31,7 @@
 #include "pipeline/compare.hpp"
 #include "pipeline/explore.hpp"
 #include "pipeline/timing.hpp"
+#include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
 #include "report/fields.hpp"
@@ -387,6 +389,41 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
                            result.packings.size(), result.comparisons.size(), result.seconds,
                            (dir / "index.html").string());
   if (result.interrupted) throw std::runtime_error("interrupted: the report holds what finished");
+  return 0;
+}
+
+int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
+  const Catalogue catalogue = load_catalogue(g);
+  campaign::AtlasSettings settings;
+  std::tie(settings.n_first, settings.n_last) = parse_range(o.n_range, "--n");
+  std::tie(settings.ranked_first, settings.ranked_last) = parse_range(o.ranked, "--ranked");
+  settings.ranked_count = o.ranked_count;
+  settings.digits = o.digits;
+  settings.threads = o.threads;
+  const std::filesystem::path dir = writable_directory(o.out);
+  const bool tty = isatty(fileno(stderr));
+  explore_cancel = false;
+  std::signal(SIGINT, on_interrupt);
+  const auto atlas = campaign::build_atlas(
+      catalogue, o.db, settings, &explore_cancel, [tty](const campaign::AtlasProgress& p) {
+        const std::string line =
+            fmt::format("atlas: n = {} done ({} of {}), {:.0f} s", p.n, p.done, p.total, p.elapsed);
+        if (tty)
+          std::cerr << "\r" << line << "\033[K" << std::flush;
+        else if (p.done % 20 == 0 || p.done == p.total)
+          std::cerr << line << "\n";
+      });
+  std::signal(SIGINT, SIG_DFL);
+  if (tty) std::cerr << "\n";
+  if (atlas.interrupted) throw std::runtime_error("interrupted: nothing written");
+  report::write_atlas(atlas, dir);
+  print_result(atlas, o.out_format);
+  if (!atlas.errors.empty() || !atlas.missing.empty())
+    throw std::runtime_error(fmt::format(
+        "the atlas was written, but {} candidate{} failed and {} value{} of n have no certified "
+        "packing (listed above)",
+        atlas.errors.size(), atlas.errors.size() == 1 ? "" : "s", atlas.missing.size(),
+        atlas.missing.size() == 1 ? "" : "s"));
   return 0;
 }
 

@@ -148,6 +148,20 @@ int cmd_db_prune(const DbPruneOptions& o);
 
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o);
 
+// `tripack atlas` (issue 12): the campaign database and the builders merged, certified, polished
+// to 30 digits and written as DIR/atlas.csv + DIR/atlas/*.txt.
+struct AtlasOptions {
+  std::string db = "data/atlas.db";
+  std::string out = "data";
+  std::string n_range = "2..200";
+  std::string ranked = "16..34";  // these n keep `ranked_count` packings
+  int ranked_count = 20;
+  int digits = 30;
+  int threads = 2;
+  OutputOptions out_format;
+};
+int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o);
+
 int cmd_classes(const GlobalOptions& g, const OutputOptions& out);
 int cmd_classify(const GlobalOptions& g, long long n, const OutputOptions& out);
 int cmd_build(const GlobalOptions& g, const BuildOptions& o);

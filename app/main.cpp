@@ -164,6 +164,26 @@ Action add_campaign(CLI::App& cli, const GlobalOptions& g, CampaignOptions& o) {
   return [c, &g, &o] { return *c ? cmd_campaign(g, o) : -1; };
 }
 
+Action add_atlas(CLI::App& cli, const GlobalOptions& g, AtlasOptions& o) {
+  auto* c = cli.add_subcommand(
+      "atlas",
+      "The best certified packings of every n: a campaign's database and every builder whose "
+      "class contains n, certified anew, polished in MPFR, ranked and labelled; writes "
+      "DIR/atlas.csv and DIR/atlas/LABEL.txt");
+  c->add_option("--db", o.db, "the campaign database (default data/atlas.db)");
+  c->add_option("--out", o.out, "the data directory (default data)");
+  c->add_option("--n", o.n_range, "A..B (default 2..200)");
+  c->add_option("--ranked", o.ranked, "these n keep --ranked-count packings (default 16..34)");
+  c->add_option("--ranked-count", o.ranked_count, "packings kept for --ranked n (default 20)")
+      ->check(CLI::Range(1, 1000));
+  c->add_option("--digits", o.digits, "significant digits of d and the coordinates (default 30)")
+      ->check(CLI::Range(19, 1000));
+  c->add_option("--threads", o.threads, "parallel values of n (default 2)")
+      ->check(CLI::Range(1, 256));
+  add_output_flags(c, o.out_format);
+  return [c, &g, &o] { return *c ? cmd_atlas(g, o) : -1; };
+}
+
 // The database commands' options.
 struct DbCommandOptions {
   DbOptions best;
@@ -288,8 +308,10 @@ int main(int argc, char** argv) {
   DrawOptions draw;
   CampaignOptions campaign;
   DbCommandOptions db;
+  AtlasOptions atlas;
   const std::vector<Action> actions{
       add_campaign(cli, g, campaign),
+      add_atlas(cli, g, atlas),
       add_db(cli, db),
       add_build(cli, g, build),
       add_analyze(cli, analyze),

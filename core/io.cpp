@@ -83,7 +83,7 @@ void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& o
   }
   out << "# n: " << pk.size() << "\n";
   if (!options.label.empty()) out << "# label: " << options.label << "\n";
-  out << "# d: " << value(pk.d) << "\n";
+  out << "# d: " << (options.exact_d.empty() ? value(pk.d) : options.exact_d) << "\n";
   if (c == Convention::Radius) out << "# r: " << r << "\n";
   if (c == Convention::UnitDiskSide) out << "# S: " << S << "\n";
   if (!pv.class_id.empty()) {
@@ -94,6 +94,13 @@ void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& o
   out << "# bonds: " << pattern.bonds.size() << "\n# rattlers:";
   for (int r : pattern.rattlers) out << ' ' << r;
   out << "\n";
+  for (const auto& line : options.comments) out << "# " << line << "\n";
+  const bool exact = c == Convention::UnitTriangle && options.exact_points &&
+                     options.exact_points->size() == pk.size();
+  if (exact) {
+    for (const auto& p : *options.exact_points) out << p[0] << ' ' << p[1] << "\n";
+    return;
+  }
   for (const auto& p : points_in(pattern, c)) {
     out << text(p.x) << ' ' << text(p.y);
     if (c == Convention::Radius) out << ' ' << r;

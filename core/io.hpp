@@ -3,6 +3,7 @@
 // and CSV; JSON numbers are doubles (17 digits), so JSON also carries them as strings.
 #pragma once
 
+#include <array>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -37,6 +38,11 @@ struct WriteOptions {
   int digits = 21;    // significant digits of coordinates (21: a long double's round trip)
   int d_digits = 21;  // of d, L, r and S (fewer when d is known to fewer digits)
   std::string label;  // the packing's name (t22a), written in the header when given
+  // Text in the unit-triangle convention: decimal strings beyond long double (an MPFR polish),
+  // written in place of d and of the coordinates when given (exact_points: one per point).
+  std::string exact_d;
+  const std::vector<std::array<std::string, 2>>* exact_points = nullptr;
+  std::vector<std::string> comments;  // extra "# ..." header lines (the text format only)
 };
 
 // Text: comment lines "# key: value" (n, d, class, k, p, variant), then one "x y" per line; in

@@ -314,4 +314,20 @@ std::string radius_or_side_from_d(const std::string& d, bool radius, int digits)
   return significant(t.get(), digits);
 }
 
+std::string oler_delta_from_L(const std::string& L, long long n) {
+  const auto point = L.find('.');
+  const int decimals = point == std::string::npos ? 0 : static_cast<int>(L.size() - point - 1);
+  const int digits = decimals + static_cast<int>(point == std::string::npos ? L.size() : point);
+  const auto prec = static_cast<mpfr_prec_t>(std::ceil((digits + 10) * 3.3219280948873623)) + 8;
+  Mp Lv(prec), t(prec);
+  if (mpfr_set_str(Lv.get(), L.c_str(), 10, kRnd) != 0)
+    throw std::invalid_argument("not a decimal number: '" + L + "'");
+  mpfr_set_si(t.get(), 8 * n + 1, kRnd);
+  mpfr_sqrt(t.get(), t.get(), kRnd);
+  mpfr_sub_ui(t.get(), t.get(), 3, kRnd);
+  mpfr_div_ui(t.get(), t.get(), 2, kRnd);
+  mpfr_sub(t.get(), Lv.get(), t.get(), kRnd);
+  return fixed(t.get(), decimals);
+}
+
 }  // namespace tripack

@@ -43,4 +43,9 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
 // keeps its 50 digits in the user's convention.
 std::string radius_or_side_from_d(const std::string& d, bool radius, int digits);
 
+// delta(n) = L - t(n), Oler's bound t(n) = (-3 + sqrt(8n + 1)) / 2 (SPEC §1), from a decimal L
+// (a multiprecision polish's), in MPFR, with as many decimals as L has: delta is known to L's
+// absolute accuracy, not to L's number of significant digits.
+std::string oler_delta_from_L(const std::string& L, long long n);
+
 }  // namespace tripack

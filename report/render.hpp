@@ -17,6 +17,7 @@
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/compare.hpp"
+#include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
 
 namespace tripack::report {

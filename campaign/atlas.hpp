@@ -1,0 +1,83 @@
+// The atlas (issue 12): for every n of a range, the best certified packings known here, merged
+// from a campaign's database and every catalogue builder whose class contains n, each certified
+// anew from its coordinates and polished in MPFR to 30 digits. The atlas is data (data/atlas.csv
+// and one coordinates file per row, written by report/atlas_report.hpp) that anyone can check.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "constructors/catalogue.hpp"
+#include "core/packing.hpp"
+
+namespace tripack::campaign {
+
+struct AtlasSettings {
+  long long n_first = 2, n_last = 200;
+  // These n keep their best `ranked_count` distinct packings (the paper's rankings to check);
+  // every other n keeps its best one.
+  long long ranked_first = 16, ranked_last = 34;
+  int ranked_count = 20;
+  int digits = 30;  // MPFR polish of d and the coordinates
+  int threads = 2;
+};
+
+// One row of data/atlas.csv.
+struct AtlasRow {
+  long long n = 0;
+  std::size_t rank = 0;  // 1 = the best here
+  std::string label;     // t29a, t17a40, t31a81.1, ... (SPEC §9) among the atlas rows of n
+  std::string d, L,
+      delta;        // MPFR: d and L with `digits` significant digits, delta with L's decimals
+  Pattern pattern;  // long double, bonds and rattlers from the geometry
+  // The coordinates to `digits` digits (unit triangle; rattlers keep their long double place).
+  std::vector<std::array<std::string, 2>> points;
+  bool certified = false;
+  std::string verdict;
+  // Where it comes from: "builder CLASS k=.. [p=..] [variant=..]" (every builder giving it),
+  // and/or "billiards seed S (R runs)" or "import FILE" from the database.
+  std::string source;
+  std::vector<std::string> builders;  // the builder members giving this packing (member_name)
+  long long runs = 0;                 // campaign runs that ended in it (0: none)
+  std::string file;                   // the coordinates, relative to the data directory
+};
+
+// A builder member of n, whether or not it made the atlas (findings compare it with the best).
+struct AtlasBuilderCheck {
+  long long n = 0;
+  std::string member;  // pipeline::member_name
+  std::string d;       // 30 digits (long double digits when the polish failed)
+  bool certified = false;
+  std::string verdict;
+  std::string label;     // its label among the certified packings of n ("" if not certified)
+  std::size_t rank = 0;  // its rank there (1 = the atlas's best; 0: not certified)
+};
+
+struct AtlasProgress {
+  long long n = 0;
+  long long done = 0, total = 0;  // values of n
+  double elapsed = 0;
+};
+
+struct AtlasResult {
+  AtlasSettings settings;
+  std::string db;
+  std::vector<AtlasRow> rows;  // by n, then rank
+  std::vector<AtlasBuilderCheck> builders;
+  std::vector<long long> missing;   // n in the range without any certified packing
+  std::vector<std::string> errors;  // one line each: a candidate that failed (the rest went on)
+  bool interrupted = false;
+  double seconds = 0;
+};
+
+// Reads the database (read-only), builds every catalogue member of each n, certifies and polishes
+// every candidate, ranks and labels them like `tripack billiards`. Throws store::StoreError for
+// the database. Stops between values of n when `cancel` is set (interrupted in the result).
+AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
+                        const AtlasSettings& settings, const std::atomic<bool>* cancel,
+                        const std::function<void(const AtlasProgress&)>& progress);
+
+}  // namespace tripack::campaign
