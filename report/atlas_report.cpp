@@ -104,6 +104,9 @@ void write_atlas(const campaign::AtlasResult& atlas, const std::filesystem::path
         "rank: " + std::to_string(row.rank), "L: " + row.L, "delta: " + row.delta,
         "source: " + row.source,
         std::string("certified: ") + (row.certified ? "yes" : "no") + " (" + row.verdict + ")"};
+    if (!row.pattern.rattlers.empty())
+      options.comments.push_back(
+          "the rattlers' places (free in their cages) are the analysis' long double ones");
     std::ostringstream text;
     write_text(text, row.pattern, options);
     write_file(dir / row.file, text.str());
@@ -171,9 +174,9 @@ void render_text(std::ostream& out, const campaign::AtlasResult& a, const Render
                          r.pattern.bonds.size(), r.pattern.rattlers.size(), r.source);
   for (const auto& b : a.builders)
     if (b.rank != 1)
-      out << fmt::format(
-          "builder {} (n = {}): d = {}, {}\n", b.member, b.n, b.d,
-          b.certified ? "below the atlas's best (" + b.label + ")" : "not certified: " + b.verdict);
+      out << fmt::format("builder {} (n = {}): d = {}, {}\n", b.member, b.n, b.d,
+                         b.certified ? fmt::format("rank {} ({})", b.rank, b.label)
+                                     : "not certified: " + b.verdict);
   for (const auto& n : a.missing) out << fmt::format("n = {}: no certified packing\n", n);
   for (const auto& e : a.errors) out << "error: " << e << "\n";
   out << fmt::format(
