@@ -20,6 +20,7 @@
 #include <tuple>
 
 #include "campaign/atlas.hpp"
+#include "campaign/atlas_files.hpp"
 #include "campaign/campaign.hpp"
 #include "campaign/import.hpp"
 #include "campaign/stored.hpp"
@@ -416,7 +417,7 @@ int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
   std::signal(SIGINT, SIG_DFL);
   if (tty) std::cerr << "\n";
   if (atlas.interrupted) throw std::runtime_error("interrupted: nothing written");
-  report::write_atlas(atlas, dir);
+  campaign::write_atlas(atlas, dir);
   print_result(atlas, o.out_format);
   if (!atlas.errors.empty() || !atlas.missing.empty())
     throw std::runtime_error(fmt::format(

@@ -117,6 +117,15 @@ PointsFile read_points(std::istream& in, FileFormat format);
 // As above, the format from the extension; errors are prefixed with the path.
 PointsFile read_points_file(const std::string& path);
 
+// A CSV field as is, or quoted (with doubled quotes) when it holds a comma, quote or line break
+// (RFC 4180), so plain names stay plain.
+inline std::string csv_field(const std::string& field) {
+  if (field.find_first_of(",\"\n\r") == std::string::npos) return field;
+  std::string q = "\"";
+  for (char c : field) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
 // Decimal string of a long double with `digits` significant digits.
 std::string format_significant(long double value, int digits);
 

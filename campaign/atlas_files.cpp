@@ -1,0 +1,175 @@
+#include "campaign/atlas_files.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/io.hpp"
+#include "pipeline/analyze.hpp"
+
+namespace tripack::campaign {
+
+namespace {
+
+const std::vector<std::string> kColumns{"n",     "rank",     "label",     "d",      "L",   "delta",
+                                        "bonds", "rattlers", "certified", "source", "file"};
+
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i) line += ',';
+    line += csv_field(fields[i]);
+  }
+  return line + "\n";
+}
+
+std::vector<std::string> fields_of(const AtlasRow& r) {
+  return {std::to_string(r.n),
+          std::to_string(r.rank),
+          r.label,
+          r.d,
+          r.L,
+          r.delta,
+          std::to_string(r.pattern.bonds.size()),
+          std::to_string(r.pattern.rattlers.size()),
+          r.certified ? "true" : "false",
+          r.source,
+          r.file};
+}
+
+// RFC 4180 fields of one line (no line breaks inside fields: the atlas writes none).
+std::vector<std::string> split_csv(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// Writes `bytes` to `path` whole; throws a one-line error naming it.
+void write_whole(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
+  const auto files = dir / "atlas";
+  std::filesystem::create_directories(files);
+  std::set<std::string> written;
+  for (const auto& row : atlas.rows) {
+    WriteOptions options;
+    options.label = row.label;
+    options.exact_d = row.d;
+    options.exact_points = &row.points;
+    options.comments = {
+        "rank: " + std::to_string(row.rank), "L: " + row.L, "delta: " + row.delta,
+        "source: " + row.source,
+        std::string("certified: ") + (row.certified ? "yes" : "no") + " (" + row.verdict + ")"};
+    if (!row.pattern.rattlers.empty())
+      options.comments.push_back(
+          "the rattlers' places (free in their cages) are the analysis' long double ones");
+    std::ostringstream text;
+    write_text(text, row.pattern, options);
+    write_whole(dir / row.file, text.str());
+    written.insert((dir / row.file).filename().string());
+  }
+  // A rerun over the same range replaces the table: files of rows that left it go too.
+  for (const auto& entry : std::filesystem::directory_iterator(files))
+    if (entry.path().extension() == ".txt" && !written.count(entry.path().filename().string()))
+      std::filesystem::remove(entry.path());
+  write_whole(dir / "atlas.csv", atlas_table(atlas));
+}
+
+std::string atlas_table(const AtlasResult& atlas) {
+  std::string table = csv_line(kColumns);
+  for (const auto& row : atlas.rows) table += csv_line(fields_of(row));
+  return table;
+}
+
+std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
+  std::ifstream in(csv);
+  if (!in) throw std::runtime_error("cannot read the atlas " + csv.string());
+  std::string line;
+  std::vector<AtlasEntry> entries;
+  long long number = 0;
+  auto fail = [&](const std::string& why) {
+    throw std::runtime_error(fmt::format("{}:{}: {}", csv.string(), number, why));
+  };
+  while (std::getline(in, line)) {
+    ++number;
+    const auto f = split_csv(line);
+    if (number == 1) {
+      if (f != kColumns) fail("not an atlas table (its header is not " + csv_line(kColumns) + ")");
+      continue;
+    }
+    if (line.empty()) continue;
+    if (f.size() != kColumns.size())
+      fail(fmt::format("{} fields, expected {}", f.size(), kColumns.size()));
+    AtlasEntry e;
+    try {
+      e.n = std::stoll(f[0]);
+      e.rank = std::stoll(f[1]);
+      e.bonds = std::stoll(f[6]);
+      e.rattlers = std::stoll(f[7]);
+      (void)std::stold(f[3]);
+      (void)std::stold(f[4]);
+      (void)std::stold(f[5]);
+    } catch (const std::exception&) {
+      fail("a number field is not a number");
+    }
+    e.label = f[2];
+    e.d = f[3];
+    e.L = f[4];
+    e.delta = f[5];
+    e.certified = f[8] == "true";
+    e.source = f[9];
+    e.file = f[10];
+    entries.push_back(std::move(e));
+  }
+  if (number == 0) fail("empty file");
+  return entries;
+}
+
+std::vector<AtlasPacking> load_atlas(const std::filesystem::path& csv, long long max_rank) {
+  std::vector<AtlasPacking> packings;
+  for (auto& entry : read_atlas(csv)) {
+    if (entry.rank > max_rank) continue;
+    pipeline::AnalyzeRequest request;
+    request.file = (csv.parent_path() / entry.file).string();
+    request.expected_n = entry.n;
+    const pipeline::FileAnalysis read = pipeline::analyze_file(request);
+    AtlasPacking p;
+    p.entry = std::move(entry);
+    p.pattern = read.analysis.pattern;
+    p.forces = read.analysis.stress.forces;
+    p.certified = read.analysis.certified();
+    packings.push_back(std::move(p));
+  }
+  return packings;
+}
+
+}  // namespace tripack::campaign
