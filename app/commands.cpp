@@ -377,13 +377,23 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
         "tripack: warning: this exploration is estimated at ~{:.0f} minutes on 2 cores (the "
         "defaults take about 5); Ctrl-C stops it with a consistent report of what finished\n",
         estimate / 60);
+  // The atlas is read (every file analysed) before the exploration: a bad one costs nothing.
+  std::optional<report::ExploreAtlas> atlas;
+  const std::filesystem::path atlas_csv = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
+  if (o.atlas != "none" && (!o.atlas.empty() || std::filesystem::exists(atlas_csv))) {
+    std::cerr << "explore: reading the atlas " << atlas_csv.string() << "\n";
+    atlas = report::ExploreAtlas{atlas_csv, campaign::read_atlas(atlas_csv),
+                                 campaign::load_atlas(atlas_csv, 1)};
+  }
   explore_cancel = false;
   std::signal(SIGINT, on_interrupt);
   const auto result =
       pipeline::explore(catalogue, settings, explore_cancel, explore_progress_line());
   std::signal(SIGINT, SIG_DFL);
   if (isatty(fileno(stderr))) std::cerr << "\n";
-  report::write_explore_report(result, dir, {}, [](const std::string& what) {
+  report::ExploreReportOptions report_options;
+  report_options.atlas = atlas ? &*atlas : nullptr;
+  report::write_explore_report(result, dir, report_options, [](const std::string& what) {
     std::cerr << "explore: writing " << what << "\n";
   });
   std::cout << fmt::format("{} packings, {} comparisons in {:.1f} s; report: {}\n",

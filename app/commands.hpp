@@ -84,6 +84,9 @@ struct ExploreOptions {
   std::uint64_t seed = 1;
   std::string out = "report";
   bool accuracy = true;
+  // The atlas shown beside the exploration: empty = the project's data/atlas.csv when it exists,
+  // "none" = no atlas.
+  std::string atlas;
 };
 // `tripack draw FILE|CLASS`: a diagram of a points file (analysed) or a class member (built).
 struct DrawOptions {

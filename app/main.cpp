@@ -143,6 +143,9 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
   c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
   c->add_option("--out", o.out, "report directory (default ./report)");
   c->add_flag("!--no-accuracy", o.accuracy, "skip the accuracy-against-time study (~20 s)");
+  c->add_option("--atlas", o.atlas,
+                "atlas.csv to show beside the exploration (default: the project's "
+                "data/atlas.csv when present; 'none': no atlas)");
   return [c, &g, &o] { return *c ? cmd_explore(g, o) : -1; };
 }
 

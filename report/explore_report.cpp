@@ -101,7 +101,7 @@ std::string classes_csv(const ExploreResult& result) {
   return out.str();
 }
 
-std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
+std::vector<DeltaPoint> delta_points(const ExploreResult& result, const ExploreAtlas* atlas) {
   std::vector<DeltaPoint> points;
   std::set<std::pair<std::string, long long>> seen;
   std::map<long long, const ExplorePacking*> billiards_best;
@@ -125,6 +125,15 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result) {
     points.push_back({n, delta, "", r->proven_optimal, true});
     if (!in_class.count(n)) points.push_back({n, delta, "", r->proven_optimal, false});
   }
+  if (atlas)
+    for (const auto& e : atlas->entries) {
+      if (e.rank != 1) continue;
+      const double delta = std::stod(e.delta);
+      points.push_back({e.n, delta, "", false, false, true});
+      // n in no class that the exploration did not search: its open square from the atlas.
+      if (!in_class.count(e.n) && !billiards_best.count(e.n))
+        points.push_back({e.n, delta, "", false, false});
+    }
   return points;
 }
 
@@ -195,7 +204,77 @@ bool svg_drawn(const ExplorePacking& r, const ExploreSettings& settings) {
   return r.n <= settings.max_n;
 }
 
-std::string html_page(const ExploreResult& result, bool diagrams, bool forces) {
+std::string atlas_diagram(const campaign::AtlasEntry& e) {
+  return "diagrams/atlas-" + e.label + ".png";
+}
+
+// The atlas beside the exploration: where it beats every certified builder of n, its best row of
+// every n with a diagram, and the files (copied into atlas/).
+std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, bool diagrams) {
+  std::ostringstream h;
+  std::map<long long, const ExplorePacking*> best_builder;
+  for (const auto& r : result.packings)
+    if (r.source == "builder" && r.certified &&
+        (!best_builder.count(r.n) || r.pattern.packing.d > best_builder[r.n]->pattern.packing.d))
+      best_builder[r.n] = &r;
+  long long first = 0, last = 0;
+  std::size_t count = 0;
+  for (const auto& e : atlas.entries)
+    if (e.rank == 1) {
+      first = count ? std::min(first, e.n) : e.n;
+      last = std::max(last, e.n);
+      ++count;
+    }
+  h << fmt::format(
+      "<h2 id=\"atlas\">Atlas: the best certified packing of every n = {}..{}</h2>\n<p>From "
+      "<a href=\"atlas/atlas.csv\">atlas.csv</a> ({} rows; copied from {}): billiards campaigns "
+      "and every builder whose class contains n, each certified again from its coordinates and "
+      "polished in MPFR to 30 digits; every file is in <a href=\"atlas/atlas/\">atlas/atlas/</a>. "
+      "In the &delta;(n) plot above its values are the grey dots.</p>\n",
+      first, last, atlas.entries.size(), html_escape(atlas.csv.string()));
+  h << "<h3>Where the atlas beats every builder of n</h3>\n<table><tr><th>n</th><th>best "
+       "builder</th><th>d builder</th><th>atlas</th><th>d atlas</th><th>gain</th><th>bonds</th>"
+       "<th>rattlers</th><th>source</th></tr>\n";
+  for (const auto& e : atlas.entries) {
+    if (e.rank != 1 || !best_builder.count(e.n)) continue;
+    const auto* b = best_builder[e.n];
+    const long double d_atlas = std::stold(e.d), d_builder = b->pattern.packing.d;
+    if (d_atlas <= d_builder * (1 + 1e-12L)) continue;
+    h << fmt::format(
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3g}</td><td>{}</td>"
+        "<td>{}</td><td>{}</td></tr>\n",
+        e.n, html_escape(member_name(b->member)), format_significant(d_builder, 15),
+        html_escape(e.label), e.d.substr(0, 17), static_cast<double>(d_atlas / d_builder - 1),
+        e.bonds, e.rattlers, html_escape(e.source));
+  }
+  h << "</table>\n<h3>Best of every n</h3>\n<table><tr><th>n</th><th>label</th><th>d (30 digits)"
+       "</th><th>&delta;</th><th>bonds</th><th>rattlers</th><th>source</th><th>files</th></tr>\n";
+  for (const auto& e : atlas.entries) {
+    if (e.rank != 1) continue;
+    h << fmt::format(
+        "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
+        "<td>{5}</td><td style=\"text-align:left\">{6}</td><td><a href=\"atlas/{7}\">coordinates"
+        "</a>{8}</td></tr>\n",
+        html_escape(e.label), e.n, e.d, e.delta.substr(0, 12), e.bonds, e.rattlers,
+        html_escape(e.source), html_escape(e.file),
+        diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "");
+  }
+  h << "</table>\n";
+  if (diagrams) {
+    h << "<h3>Diagrams</h3>\n<div class=\"grid\">\n";
+    for (const auto& p : atlas.best)
+      h << fmt::format(
+          "<figure><a href=\"{0}\"><img src=\"{0}\" loading=\"lazy\" alt=\"{1}\"></a>"
+          "<figcaption>{1} (n = {2}, d = {3}, {4} bonds, {5} rattlers)</figcaption></figure>\n",
+          atlas_diagram(p.entry), html_escape(p.entry.label), p.entry.n, p.entry.d.substr(0, 17),
+          p.entry.bonds, p.entry.rattlers);
+    h << "</div>\n";
+  }
+  return h.str();
+}
+
+std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
+                      const ExploreAtlas* atlas) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
        "<title>tripack explore</title>\n<style>\n"
@@ -222,6 +301,7 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces) {
        "href=\"delta.gp\">delta.gp</a>; all packings: <a href=\"packings.csv\">packings.csv</a>, "
        "<a href=\"packings.json\">packings.json</a>; <a href=\"compare.csv\">compare.csv</a>, <a "
        "href=\"classes.csv\">classes.csv</a>.</p>\n";
+  if (atlas) h << html_atlas(result, *atlas, diagrams);
   h << "<h2>Constructed vs billiards</h2>\n<table><tr><th>n</th><th>builder</th><th>billiards"
        "</th><th>d builder</th><th>d billiards</th><th>rel. diff</th><th>bonds</th><th>rattlers"
        "</th><th>same graph</th></tr>\n";
@@ -337,8 +417,24 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
         draw_packing(diagram, base.string() + "-forces.png", {900, true, true});
     }
   }
+  if (options.atlas) {
+    say(fmt::format("atlas: {} rows, {} diagrams", options.atlas->entries.size(),
+                    options.diagrams ? options.atlas->best.size() : 0));
+    const fs::path from = options.atlas->csv.parent_path();
+    fs::create_directories(dir / "atlas" / "atlas");
+    fs::copy_file(options.atlas->csv, dir / "atlas" / "atlas.csv",
+                  fs::copy_options::overwrite_existing);
+    for (const auto& e : options.atlas->entries)
+      fs::copy_file(from / e.file, dir / "atlas" / e.file, fs::copy_options::overwrite_existing);
+    if (options.diagrams)
+      for (const auto& p : options.atlas->best) {
+        Diagram diagram{p.pattern, p.entry.label, p.entry.d.substr(0, 17), p.forces};
+        draw_packing(diagram, (dir / atlas_diagram(p.entry)).string(),
+                     {440, p.entry.n <= 60, false});
+      }
+  }
   say("plot: delta.svg, delta.png, delta.pdf");
-  plot_delta(delta_points(result), dir);
+  plot_delta(delta_points(result, options.atlas), dir);
   if (result.accuracy) {
     say("accuracy: accuracy.csv, accuracy.svg, accuracy.png, accuracy.pdf");
     const auto points = accuracy_points(*result.accuracy);
@@ -346,7 +442,8 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     write_file(dir / "accuracy.csv", accuracy_csv(*result.accuracy));
   }
   say("index.html");
-  write_file(dir / "index.html", html_page(result, options.diagrams, options.forces));
+  write_file(dir / "index.html",
+             html_page(result, options.diagrams, options.forces, options.atlas));
 }
 
 }  // namespace tripack::report

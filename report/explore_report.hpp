@@ -7,14 +7,26 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "campaign/atlas_files.hpp"
 #include "pipeline/explore.hpp"
 
 namespace tripack::report {
 
+// The atlas (data/atlas.csv, issue 12) shown beside the exploration: its best packing of every n
+// in the delta(n) plot (grey dots), a table, a diagram per n, the n where it beats every
+// builder; its table and files are copied into DIR/atlas/ so the report stays self-contained.
+struct ExploreAtlas {
+  std::filesystem::path csv;                  // where atlas.csv was read
+  std::vector<campaign::AtlasEntry> entries;  // every row
+  std::vector<campaign::AtlasPacking> best;   // the rank-1 rows, read back and analysed
+};
+
 struct ExploreReportOptions {
   bool diagrams = true;  // SVG + PNG per packing (PNG only for the large terms beyond max n)
   bool forces = true;    // also a forces diagram of each certified builder packing
+  const ExploreAtlas* atlas = nullptr;
 };
 
 // Writes `dir` (created if needed). Throws a one-line error when the directory cannot be written

@@ -298,26 +298,27 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   rank[""] = classes.size();
   std::vector<DeltaPoint> rows = points;
   std::stable_sort(rows.begin(), rows.end(), [&](const DeltaPoint& a, const DeltaPoint& b) {
-    return std::tuple(rank.at(a.class_id), a.billiards, a.n) <
-           std::tuple(rank.at(b.class_id), b.billiards, b.n);
+    return std::tuple(rank.at(a.class_id), a.billiards, a.atlas, a.n) <
+           std::tuple(rank.at(b.class_id), b.billiards, b.atlas, b.n);
   });
-  std::string csv = "n,delta,class,class_no,proven,billiards\n";
+  std::string csv = "n,delta,class,class_no,proven,billiards,atlas\n";
   for (const auto& r : rows) {
     const std::size_t class_no = r.class_id.empty() ? 0 : rank.at(r.class_id) + 1;
-    csv += fmt::format("{},{},{},{},{},{}\n", r.n, r.delta, csv_field(r.class_id), class_no,
-                       int(r.proven), int(r.billiards));
+    csv += fmt::format("{},{},{},{},{},{},{}\n", r.n, r.delta, csv_field(r.class_id), class_no,
+                       int(r.proven), int(r.billiards), int(r.atlas));
   }
 
   const double limit = std::sqrt(3.0) - 1.5;
   double n_lo = points[0].n, n_hi = n_lo, y_lo = 0, y_hi = limit;
-  bool classless = false, billiards = false, proven = false;
+  bool classless = false, billiards = false, proven = false, atlas = false;
   for (const auto& p : points) {
     n_lo = std::min(n_lo, double(p.n));
     n_hi = std::max(n_hi, double(p.n));
     y_lo = std::min(y_lo, p.delta);
     y_hi = std::max(y_hi, p.delta);
-    classless = classless || p.class_id.empty();
+    classless = classless || (p.class_id.empty() && !p.atlas);
     billiards = billiards || p.billiards;
+    atlas = atlas || p.atlas;
     proven = proven || p.proven;
   }
   const double span = y_hi - y_lo;
@@ -330,7 +331,9 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   gp += "# stamps the PDF with the current date; tripack's own run stamps 1970-01-01 so its\n";
   gp += "# files are the same bytes every time).\n#\n";
   gp += "# " + name + ".csv columns: 1 n, 2 delta, 3 class ('' = in no class), 4 class_no (its\n";
-  gp += "# index in `classes` below, 0 = in no class), 5 proven (1/0), 6 billiards (1/0). The\n";
+  gp +=
+      "# index in `classes` below, 0 = in no class), 5 proven (1/0), 6 billiards (1/0), 7 atlas\n";
+  gp += "# (1/0: the best of data/atlas.csv, a grey dot). The\n";
   gp +=
       "# clauses filter on class_no, not on the name: gnuplot's strcol() cuts a quoted CSV field\n";
   gp +=
@@ -350,7 +353,8 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   for (std::size_t i = 0; i < classes.size(); ++i) gp += style_line(i, "pt 7 ps 0.6");
   gp += "set style line 101 lc rgb 'black' pt 4 ps 1.2 lw 1   # n in no class: open square\n";
   gp += "set style line 102 lc rgb '#b2182b' pt 2 ps 1.4 lw 1.5 # billiards best: cross\n";
-  gp += "set style line 103 lc rgb 'black' pt 6 ps 1.9 lw 1   # proven optimum: ring\n\n";
+  gp += "set style line 103 lc rgb 'black' pt 6 ps 1.9 lw 1   # proven optimum: ring\n";
+  gp += "set style line 105 lc rgb '#737373' pt 7 ps 0.45      # atlas best: grey dot\n\n";
   gp += "set title \"Distance from Oler's bound\\nt(n) = (-3 + sqrt(8n+1))/2,  L(n) = 1/d(n)\"\n";
   gp += "set xlabel 'n'\nset ylabel 'delta(n) = L(n) - t(n)'\n";
   gp += "set logscale x\n";
@@ -379,6 +383,10 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   gp += "set style line 104 lc rgb 'gray40' dt 2 lw 1\n\n";
 
   std::vector<std::string> clauses;
+  if (atlas) {  // first, so that the classes draw over it
+    clauses.push_back(
+        "data skip 1 using 1:($7 == 1 ? $2 : NaN) with points ls 105 title 'atlas best'");
+  }
   if (!classes.empty()) {
     clauses.push_back(
         "for [i=1:|classes|] data skip 1 using 1:($4 == i && $6 == 0 ? $2 : NaN) \\\n"
@@ -386,7 +394,8 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   }
   if (classless) {
     clauses.push_back(
-        "data skip 1 using 1:($4 == 0 ? $2 : NaN) with points ls 101 title 'in no class'");
+        "data skip 1 using 1:($4 == 0 && $7 == 0 ? $2 : NaN) with points ls 101 title 'in no "
+        "class'");
   }
   if (billiards) {
     clauses.push_back(

@@ -21,6 +21,7 @@ struct DeltaPoint {
   std::string class_id;    // the class it belongs to ("" for n in no class: open squares)
   bool proven = false;     // proven optimum (Delta(k) and n <= 15): circled dot
   bool billiards = false;  // the billiards-best value (marked differently)
+  bool atlas = false;      // the atlas's best (data/atlas.csv): a grey dot at every n
 };
 struct AccuracyPoint {
   std::string series;  // e.g. "n = 22 billiards", "n = 22 polish", ...
@@ -35,7 +36,8 @@ struct AccuracyPoint {
 //
 // Delta plot layers: one line style per class joining its members (billiards == false) in n
 // order; open squares for class_id == ""; a cross on every billiards point (never joined: it is
-// a measurement, not a member of the class's formula); a ring around every proven point. A point
+// a measurement, not a member of the class's formula); a small grey dot at every atlas point
+// (atlas == true, class_id ""); a ring around every proven point. A point
 // in several classes is passed once per class. Log-scale n. Accuracy plot: one joined series per
 // name, in seconds order, log-scale seconds; points with seconds <= 0 stay in the CSV but cannot
 // be drawn on the log axis. Both keep the order in which classes / series first appear.

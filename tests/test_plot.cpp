@@ -106,7 +106,7 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
 
   const auto csv = lines(slurp(dir / "delta.csv"));
   ASSERT_EQ(csv.size(), points.size() + 1);
-  EXPECT_EQ(csv[0], "n,delta,class,class_no,proven,billiards");
+  EXPECT_EQ(csv[0], "n,delta,class,class_no,proven,billiards,atlas");
   // Every point is one row, exactly (shortest round-trip doubles), grouped by class in the
   // order the classes first appear: hexagonal 1, four-delta 2, none 0.
   for (const auto& p : points) {
@@ -116,7 +116,7 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
     int found = 0;
     for (std::size_t i = 1; i < csv.size(); ++i) {
       const auto f = fields(csv[i]);
-      ASSERT_EQ(f.size(), 6u) << csv[i];
+      ASSERT_EQ(f.size(), 7u) << csv[i];
       if (std::stoll(f[0]) == p.n && std::strtod(f[1].c_str(), nullptr) == p.delta &&
           f[2] == p.class_id && f[3] == class_no && f[4] == (p.proven ? "1" : "0") &&
           f[5] == (p.billiards ? "1" : "0")) {
@@ -142,6 +142,30 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
                              "proven optimum", "limit of delta(4Delta(k))"}) {
     EXPECT_NE(svg.find(std::string("<text>") + legend + "</text>"), std::string::npos) << legend;
   }
+  fs::remove_all(dir);
+}
+
+// The atlas's points (issue 12): a column of their own, drawn as grey dots under one legend
+// entry, never as the classless open squares even though their class is "".
+TEST(Plot, AtlasPointsHaveTheirOwnColumnAndLegend) {
+  const fs::path dir = scratch("delta-atlas");
+  std::vector<DeltaPoint> points = synthetic();
+  for (long long n : {50, 51, 52}) points.push_back({n, 0.3, "", false, false, true});
+  plot_delta(points, dir);
+  const auto csv = lines(slurp(dir / "delta.csv"));
+  int atlas_rows = 0;
+  for (std::size_t i = 1; i < csv.size(); ++i) {
+    const auto f = fields(csv[i]);
+    ASSERT_EQ(f.size(), 7u);
+    if (f[6] == "1") {
+      ++atlas_rows;
+      EXPECT_EQ(f[3], "0");  // class_no 0, yet not an open square (the script filters $7 == 0)
+    }
+  }
+  EXPECT_EQ(atlas_rows, 3);
+  const std::string gp = slurp(dir / "delta.gp");
+  EXPECT_NE(gp.find("($4 == 0 && $7 == 0 ? $2 : NaN)"), std::string::npos);
+  EXPECT_NE(slurp(dir / "delta.svg").find("<text>atlas best</text>"), std::string::npos);
   fs::remove_all(dir);
 }
 
