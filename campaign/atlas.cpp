@@ -8,7 +8,9 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
+#include <tuple>
 
 #include "analysis/compare.hpp"
 #include "campaign/stored.hpp"
@@ -195,6 +197,38 @@ std::vector<AtlasRow> rows_of(long long n, std::vector<Candidate> candidates, st
   return rows;
 }
 
+std::vector<AtlasGap> gaps_of(const Catalogue& catalogue, const std::vector<AtlasRow>& rows,
+                              long long last) {
+  std::map<long long, const AtlasRow*> best;
+  for (const auto& r : rows)
+    if (r.rank == 1) best[r.n] = &r;
+  std::vector<AtlasGap> gaps;
+  std::set<std::tuple<std::string, long, long>> seen;
+  for (const auto& m : pipeline::class_members_up_to(catalogue, last - 1)) {
+    const long long n = catalogue.n_of(catalogue.find(m.class_id), m.k, m.p);
+    if (!seen.insert({m.class_id, m.p, m.k}).second || !best.count(n) || !best.count(n + 1))
+      continue;
+    const AtlasRow& a = *best[n];
+    const AtlasRow& b = *best[n + 1];
+    AtlasGap g;
+    g.class_id = m.class_id;
+    g.k = m.k;
+    g.p = m.p;
+    g.n = n;
+    g.label_n = a.label;
+    g.label_next = b.label;
+    g.L_n = std::stold(a.L);
+    g.L_next = std::stold(b.L);
+    g.delta_difference = std::stold(b.delta) - std::stold(a.delta);
+    g.claim_tight = catalogue.find(m.class_id).claim_tight;
+    gaps.push_back(g);
+  }
+  std::stable_sort(gaps.begin(), gaps.end(), [](const AtlasGap& x, const AtlasGap& y) {
+    return std::tie(x.class_id, x.p, x.k) < std::tie(y.class_id, y.p, y.k);
+  });
+  return gaps;
+}
+
 }  // namespace
 
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
@@ -271,6 +305,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     }
     result.builders.insert(result.builders.end(), outcome.builders.begin(), outcome.builders.end());
   }
+  result.gaps = gaps_of(catalogue, result.rows, last);
   result.seconds = seconds_since(start);
   return result;
 }

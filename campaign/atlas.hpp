@@ -56,6 +56,19 @@ struct AtlasBuilderCheck {
   std::size_t rank = 0;  // its rank there (1 = the atlas's best; 0: not certified)
 };
 
+// The paper's tight/loose measure (GL1995 sec. 6) from the atlas: for a class member n(k) with
+// n(k)+1 in the atlas, L(n(k)+1) - L(n(k)) (and the same for delta) between the atlas's best
+// packings of n(k) and n(k)+1. A class is tight when it stays away from 0 as k grows.
+struct AtlasGap {
+  std::string class_id;
+  long k = 0, p = 0;
+  long long n = 0;
+  std::string label_n, label_next;  // the atlas rows used (rank 1 of n and of n+1)
+  long double L_n = 0, L_next = 0;
+  long double delta_difference = 0;  // delta(n+1) - delta(n)
+  std::string claim_tight;           // the paper's conjecture (classes.yaml claim.tight)
+};
+
 struct AtlasProgress {
   long long n = 0;
   long long done = 0, total = 0;  // values of n
@@ -67,6 +80,7 @@ struct AtlasResult {
   std::string db;
   std::vector<AtlasRow> rows;  // by n, then rank
   std::vector<AtlasBuilderCheck> builders;
+  std::vector<AtlasGap> gaps;       // by class, then p, then k
   std::vector<long long> missing;   // n in the range without any certified packing
   std::vector<std::string> errors;  // one line each: a candidate that failed (the rest went on)
   bool interrupted = false;

@@ -101,6 +101,14 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   for (const auto& entry : std::filesystem::directory_iterator(files))
     if (entry.path().extension() == ".txt" && !written.count(entry.path().filename().string()))
       std::filesystem::remove(entry.path());
+  std::string gaps =
+      "class,p,k,n,n_label,next_label,L_n,L_next,L_difference,delta_difference,paper_tight\n";
+  for (const auto& g : atlas.gaps)
+    gaps += csv_line({g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k),
+                      std::to_string(g.n), g.label_n, g.label_next, format_significant(g.L_n, 18),
+                      format_significant(g.L_next, 18), format_significant(g.L_next - g.L_n, 15),
+                      format_significant(g.delta_difference, 15), g.claim_tight});
+  write_whole(dir / "atlas-gaps.csv", gaps);
   write_whole(dir / "atlas.csv", atlas_table(atlas));
 }
 

@@ -15,7 +15,9 @@
 namespace tripack::campaign {
 
 // Writes DIR/atlas.csv and DIR/atlas/*.txt (files of rows no longer in the atlas are removed, so
-// the directory is exactly the table). Coordinates files first, the table last.
+// the directory is exactly the table), and DIR/atlas-gaps.csv (class, p, k, n, n_label,
+// next_label, L_n, L_next, L_difference, delta_difference, paper_tight: the tight/loose table).
+// Coordinates files first, the tables last.
 void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir);
 
 // atlas.csv's text: the header and a line per row (`tripack atlas --csv` prints the same).
