@@ -406,7 +406,17 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
 int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
   campaign::AtlasSettings settings;
-  std::tie(settings.n_first, settings.n_last) = parse_range(o.n_range, "--n");
+  // "A..B", "N" or a comma-separated list of them.
+  settings.n_first = std::numeric_limits<long long>::max();
+  settings.n_last = 0;
+  std::stringstream items(o.n_range);
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto [a, b] = parse_range(item, "--n");
+    settings.n_first = std::min<long long>(settings.n_first, a);
+    settings.n_last = std::max<long long>(settings.n_last, b);
+    for (long n = a; n <= b; ++n) settings.n_values.push_back(n);
+  }
+  if (settings.n_values.empty()) throw std::invalid_argument("--n is empty");
   std::tie(settings.ranked_first, settings.ranked_last) = parse_range(o.ranked, "--ranked");
   settings.ranked_count = o.ranked_count;
   settings.digits = o.digits;

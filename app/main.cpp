@@ -175,7 +175,7 @@ Action add_atlas(CLI::App& cli, const GlobalOptions& g, AtlasOptions& o) {
       "DIR/atlas.csv and DIR/atlas/LABEL.txt");
   c->add_option("--db", o.db, "the campaign database (default data/atlas.db)");
   c->add_option("--out", o.out, "the data directory (default data)");
-  c->add_option("--n", o.n_range, "A..B (default 2..200)");
+  c->add_option("--n", o.n_range, "A..B, N, or a list of them: 254,255,256 (default 2..200)");
   c->add_option("--ranked", o.ranked, "these n keep --ranked-count packings (default 16..34)");
   c->add_option("--ranked-count", o.ranked_count, "packings kept for --ranked n (default 20)")
       ->check(CLI::Range(1, 1000));

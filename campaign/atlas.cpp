@@ -245,6 +245,13 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
                : 1;
   };
 
+  // Values of n on threads, largest first (the slowest start early), results by n.
+  std::vector<long long> todo;
+  for (long long n = last; n >= first; --n)
+    if (settings.n_values.empty() ||
+        std::find(settings.n_values.begin(), settings.n_values.end(), n) != settings.n_values.end())
+      todo.push_back(n);
+
   // Everything read from the database first (one connection, one thread): the best few stored
   // packings of each n. Builders may add packings above them, so a few more than kept.
   std::map<long long, std::vector<RankedPacking>> stored;
@@ -253,7 +260,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     options.create = false;
     options.allow_read_only = true;
     const store::ResultsDb db = store::ResultsDb::open(db_path, options);
-    for (long long n = first; n <= last; ++n) {
+    for (long long n : todo) {
       auto ranked = ranked_packings(db, n);
       if (ranked.size() > keep_of(n) + 4) ranked.resize(keep_of(n) + 4);
       stored[n] = std::move(ranked);
@@ -265,9 +272,6 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     if (n >= first) members[n].push_back(m);
   }
 
-  // Values of n on threads, largest first (the slowest start early), results by n.
-  std::vector<long long> todo;
-  for (long long n = last; n >= first; --n) todo.push_back(n);
   std::map<long long, NOutcome> outcomes;
   std::mutex lock;
   std::size_t next = 0;
