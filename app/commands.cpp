@@ -382,8 +382,11 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   const std::filesystem::path atlas_csv = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
   if (o.atlas != "none" && (!o.atlas.empty() || std::filesystem::exists(atlas_csv))) {
     std::cerr << "explore: reading the atlas " << atlas_csv.string() << "\n";
-    atlas = report::ExploreAtlas{atlas_csv, campaign::read_atlas(atlas_csv),
-                                 campaign::load_atlas(atlas_csv, 1)};
+    const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
+    atlas = report::ExploreAtlas{
+        atlas_csv, campaign::read_atlas(atlas_csv), campaign::load_atlas(atlas_csv, 1),
+        std::filesystem::exists(gaps_csv) ? campaign::read_atlas_gaps(gaps_csv)
+                                          : std::vector<campaign::AtlasGap>{}};
   }
   explore_cancel = false;
   std::signal(SIGINT, on_interrupt);

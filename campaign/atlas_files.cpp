@@ -17,6 +17,18 @@ namespace {
 const std::vector<std::string> kColumns{"n",     "rank",     "label",     "d",      "L",   "delta",
                                         "bonds", "rattlers", "certified", "source", "file"};
 
+const std::vector<std::string> kGapColumns{"class",
+                                           "p",
+                                           "k",
+                                           "n",
+                                           "n_label",
+                                           "next_label",
+                                           "L_n",
+                                           "L_next",
+                                           "L_difference",
+                                           "delta_difference",
+                                           "paper_tight"};
+
 std::string csv_line(const std::vector<std::string>& fields) {
   std::string line;
   for (std::size_t i = 0; i < fields.size(); ++i) {
@@ -101,8 +113,7 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   for (const auto& entry : std::filesystem::directory_iterator(files))
     if (entry.path().extension() == ".txt" && !written.count(entry.path().filename().string()))
       std::filesystem::remove(entry.path());
-  std::string gaps =
-      "class,p,k,n,n_label,next_label,L_n,L_next,L_difference,delta_difference,paper_tight\n";
+  std::string gaps = csv_line(kGapColumns);
   for (const auto& g : atlas.gaps)
     gaps += csv_line({g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k),
                       std::to_string(g.n), g.label_n, g.label_next, format_significant(g.L_n, 18),
@@ -118,25 +129,45 @@ std::string atlas_table(const AtlasResult& atlas) {
   return table;
 }
 
-std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
+namespace {
+
+// The rows of a CSV table with this exact header, each with as many fields; one-line errors
+// naming the file and line.
+std::vector<std::vector<std::string>> read_table(const std::filesystem::path& csv,
+                                                 const std::vector<std::string>& columns,
+                                                 const std::string& what) {
   std::ifstream in(csv);
-  if (!in) throw std::runtime_error("cannot read the atlas " + csv.string());
+  if (!in) throw std::runtime_error("cannot read the " + what + " " + csv.string());
   std::string line;
-  std::vector<AtlasEntry> entries;
+  std::vector<std::vector<std::string>> rows;
   long long number = 0;
   auto fail = [&](const std::string& why) {
     throw std::runtime_error(fmt::format("{}:{}: {}", csv.string(), number, why));
   };
   while (std::getline(in, line)) {
     ++number;
-    const auto f = split_csv(line);
+    auto f = split_csv(line);
     if (number == 1) {
-      if (f != kColumns) fail("not an atlas table (its header is not " + csv_line(kColumns) + ")");
+      if (f != columns)
+        fail("not " + what + " (its header is not " + csv_line(columns).substr(0, 200) + ")");
       continue;
     }
     if (line.empty()) continue;
-    if (f.size() != kColumns.size())
-      fail(fmt::format("{} fields, expected {}", f.size(), kColumns.size()));
+    if (f.size() != columns.size())
+      fail(fmt::format("{} fields, expected {}", f.size(), columns.size()));
+    rows.push_back(std::move(f));
+  }
+  if (number == 0) fail("empty file");
+  return rows;
+}
+
+}  // namespace
+
+std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
+  std::vector<AtlasEntry> entries;
+  long long number = 1;
+  for (const auto& f : read_table(csv, kColumns, "an atlas table")) {
+    ++number;
     AtlasEntry e;
     try {
       e.n = std::stoll(f[0]);
@@ -147,7 +178,8 @@ std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
       (void)std::stold(f[4]);
       (void)std::stold(f[5]);
     } catch (const std::exception&) {
-      fail("a number field is not a number");
+      throw std::runtime_error(
+          fmt::format("{}:{}: a number field is not a number", csv.string(), number));
     }
     e.label = f[2];
     e.d = f[3];
@@ -158,8 +190,33 @@ std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
     e.file = f[10];
     entries.push_back(std::move(e));
   }
-  if (number == 0) fail("empty file");
   return entries;
+}
+
+std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
+  std::vector<AtlasGap> gaps;
+  long long number = 1;
+  for (const auto& f : read_table(csv, kGapColumns, "an atlas gaps table")) {
+    ++number;
+    AtlasGap g;
+    try {
+      g.class_id = f[0];
+      g.p = f[1].empty() ? 0 : std::stol(f[1]);
+      g.k = std::stol(f[2]);
+      g.n = std::stoll(f[3]);
+      g.label_n = f[4];
+      g.label_next = f[5];
+      g.L_n = std::stold(f[6]);
+      g.L_next = std::stold(f[7]);
+      g.delta_difference = std::stold(f[9]);
+      g.claim_tight = f[10];
+    } catch (const std::exception&) {
+      throw std::runtime_error(
+          fmt::format("{}:{}: a number field is not a number", csv.string(), number));
+    }
+    gaps.push_back(std::move(g));
+  }
+  return gaps;
 }
 
 std::vector<AtlasPacking> load_atlas(const std::filesystem::path& csv, long long max_rank) {

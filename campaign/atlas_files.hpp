@@ -37,6 +37,9 @@ struct AtlasEntry {
 // missing or malformed.
 std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv);
 
+// DIR/atlas-gaps.csv read back (the tight/loose table); same errors as read_atlas.
+std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv);
+
 // A row with its packing: the file read back and analysed (the files keep no bonds), so it can
 // be drawn with its bonds, rattlers and forces.
 struct AtlasPacking {

@@ -260,6 +260,22 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
         diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "");
   }
   h << "</table>\n";
+  if (!atlas.gaps.empty()) {
+    h << "<h3 id=\"atlas-gaps\">Tight or loose: L(n(k)+1) &minus; L(n(k)) between the atlas's "
+         "best packings</h3>\n<p>GL1995 sec. 6: a class is tight when this step stays away from "
+         "0 as k grows, loose when &delta;(n(k)+1) &minus; &delta;(n(k)) tends to 0 (<a "
+         "href=\"atlas/atlas-gaps.csv\">atlas-gaps.csv</a>).</p>\n<table><tr><th>class</th>"
+         "<th>p</th><th>k</th><th>n</th><th>n+1</th><th>L(n+1) &minus; L(n)</th><th>&delta; "
+         "step</th><th>paper: tight</th></tr>\n";
+    for (const auto& g : atlas.gaps)
+      h << fmt::format(
+          "<tr><td>{}</td><td>{}</td><td>{}</td><td>{} ({})</td><td>{}</td><td>{:.6g}</td>"
+          "<td>{:.6g}</td><td>{}</td></tr>\n",
+          html_escape(g.class_id), g.p ? std::to_string(g.p) : "", g.k, g.n, html_escape(g.label_n),
+          html_escape(g.label_next), static_cast<double>(g.L_next - g.L_n),
+          static_cast<double>(g.delta_difference), html_escape(g.claim_tight));
+    h << "</table>\n";
+  }
   if (diagrams) {
     h << "<h3>Diagrams</h3>\n<div class=\"grid\">\n";
     for (const auto& p : atlas.best)
@@ -424,6 +440,9 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     fs::create_directories(dir / "atlas" / "atlas");
     fs::copy_file(options.atlas->csv, dir / "atlas" / "atlas.csv",
                   fs::copy_options::overwrite_existing);
+    if (fs::exists(from / "atlas-gaps.csv"))
+      fs::copy_file(from / "atlas-gaps.csv", dir / "atlas" / "atlas-gaps.csv",
+                    fs::copy_options::overwrite_existing);
     for (const auto& e : options.atlas->entries)
       fs::copy_file(from / e.file, dir / "atlas" / e.file, fs::copy_options::overwrite_existing);
     if (options.diagrams)

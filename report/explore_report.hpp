@@ -21,6 +21,7 @@ struct ExploreAtlas {
   std::filesystem::path csv;                  // where atlas.csv was read
   std::vector<campaign::AtlasEntry> entries;  // every row
   std::vector<campaign::AtlasPacking> best;   // the rank-1 rows, read back and analysed
+  std::vector<campaign::AtlasGap> gaps;       // atlas-gaps.csv beside it (empty if absent)
 };
 
 struct ExploreReportOptions {
