@@ -381,12 +381,14 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   std::optional<report::ExploreAtlas> atlas;
   const std::filesystem::path atlas_csv = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
   if (o.atlas != "none" && (!o.atlas.empty() || std::filesystem::exists(atlas_csv))) {
-    std::cerr << "explore: reading the atlas " << atlas_csv.string() << "\n";
+    auto entries = campaign::read_atlas(atlas_csv);
+    std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
+                             atlas_csv.string(), entries.size());
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
-    atlas = report::ExploreAtlas{
-        atlas_csv, campaign::read_atlas(atlas_csv), campaign::load_atlas(atlas_csv, 1),
-        std::filesystem::exists(gaps_csv) ? campaign::read_atlas_gaps(gaps_csv)
-                                          : std::vector<campaign::AtlasGap>{}};
+    atlas =
+        report::ExploreAtlas{atlas_csv, std::move(entries), campaign::load_atlas(atlas_csv, 1),
+                             std::filesystem::exists(gaps_csv) ? campaign::read_atlas_gaps(gaps_csv)
+                                                               : std::vector<campaign::AtlasGap>{}};
   }
   explore_cancel = false;
   std::signal(SIGINT, on_interrupt);

@@ -149,7 +149,8 @@ std::vector<std::vector<std::string>> read_table(const std::filesystem::path& cs
     auto f = split_csv(line);
     if (number == 1) {
       if (f != columns)
-        fail("not " + what + " (its header is not " + csv_line(columns).substr(0, 200) + ")");
+        fail("not a tripack " + what + " (its header is not " + csv_line(columns).substr(0, 200) +
+             ")");
       continue;
     }
     if (line.empty()) continue;
@@ -166,7 +167,7 @@ std::vector<std::vector<std::string>> read_table(const std::filesystem::path& cs
 std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
   std::vector<AtlasEntry> entries;
   long long number = 1;
-  for (const auto& f : read_table(csv, kColumns, "an atlas table")) {
+  for (const auto& f : read_table(csv, kColumns, "atlas table")) {
     ++number;
     AtlasEntry e;
     try {
@@ -196,7 +197,7 @@ std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
 std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
   std::vector<AtlasGap> gaps;
   long long number = 1;
-  for (const auto& f : read_table(csv, kGapColumns, "an atlas gaps table")) {
+  for (const auto& f : read_table(csv, kGapColumns, "atlas gaps table")) {
     ++number;
     AtlasGap g;
     try {
