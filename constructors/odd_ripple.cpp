@@ -16,6 +16,11 @@
 // Shooting on L solves it to long double in O(k). The whole bond system then goes to the polisher,
 // which measures every residual (and would refine a poor start), and finish() re-detects the
 // bonds from the geometry alone: they must reproduce the intended list exactly.
+//
+// The other modification (variant `other`, docs/odd-ripple-other.md: t16a33, t29a, t46a, t67b,
+// t92b) has the same chain; B0 and B1 are free, A0 slides up the left wall, A2 sits on the floor
+// disk F2, and the rattlers are A1, A4, ..., A_{2k-2}. Its 3k+8 equations reduce to two unknowns
+// (A0's position on the wall inside, L outside), solved by nested shooting.
 #include <algorithm>
 #include <cmath>
 #include <functional>
