@@ -31,5 +31,8 @@ Pattern build_chain_family(const ChainFamilyShape& shape);
 
 // Delta(2k+1) + 1 with the depressed cage (CONSTRUCTIONS.md §7), k >= 3.
 Pattern build_odd_ripple_depressed(long k);
+// Delta(2k+1) + 1, the other modification (docs/odd-ripple-other.md: t16a33, t29a, t46a, t67b,
+// t92b), k >= 2.
+Pattern build_odd_ripple_other(long k);
 
 }  // namespace tripack

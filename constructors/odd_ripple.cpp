@@ -16,17 +16,23 @@
 // Shooting on L solves it to long double in O(k). The whole bond system then goes to the polisher,
 // which measures every residual (and would refine a poor start), and finish() re-detects the
 // bonds from the geometry alone: they must reproduce the intended list exactly.
+//
+// The other modification (variant `other`, docs/odd-ripple-other.md: t16a33, t29a, t46a, t67b,
+// t92b) has the same chain; B0 and B1 are free, A0 slides up the left wall, A2 sits on the floor
+// disk F2, and the rattlers are A1, A4, ..., A_{2k-2}. Its 3k+8 equations reduce to two unknowns
+// (A0's position on the wall inside, L outside), solved by nested shooting.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "polish/polish.hpp"
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
 #include "core/neighbours.hpp"
+#include "polish/polish.hpp"
 
 namespace tripack {
 
@@ -99,17 +105,17 @@ std::optional<long double> march(long k, long double L, Ripple& c) {
   return c.floor[static_cast<std::size_t>(k + 1)].x - L;
 }
 
-// Solves the shooting equation in x0 = A_0.x, L = 2k - 1 + 2 x0. The physical root is the first
-// sign change scanning down from x0 = 1 (x0 = 0.786 at k = 3, 0.631 at k = 60, 0.598 at k = 300;
-// at x0 = 1/sqrt3 the anchor row is at height 1 and nothing fits below it). Above some x0 the
-// chain cannot be closed (a raised disk would leave the band 0 < y < 1); for large k the mismatch
-// changes sign within less than a scan step of that edge, so the edge is bisected as well.
-Ripple solve_ripple(long k) {
-  Ripple c;
-  c.floor.resize(static_cast<std::size_t>(k + 2));
-  c.raised.resize(static_cast<std::size_t>(k));
+// Solves a shooting equation f(L) = 0, L = 2k - 1 + 2 x0 (x0 = A_0.x on the lattice), where
+// f(L) is nullopt when the chain cannot be closed at L. The physical root is the first sign
+// change scanning down from x0 = 1 (depressed cage: x0 = 0.786 at k = 3, 0.631 at k = 60, 0.598
+// at k = 300; at x0 = 1/sqrt3 the anchor row is at height 1 and nothing fits below it). Above
+// some x0 the chain cannot be closed (a raised disk would leave the band 0 < y < 1); for large k
+// the mismatch changes sign within less than a scan step of that edge, so the edge is bisected as
+// well. Leaves f's last evaluation at the returned L (the closer end of the final bracket).
+long double shoot(long k, const std::function<std::optional<long double>(long double)>& march,
+                  const std::string& what) {
   const long double base = static_cast<long double>(2 * k - 1);
-  auto f = [&](long double x0) { return march(k, base + 2 * x0, c); };
+  auto f = [&](long double x0) { return march(base + 2 * x0); };
   long double hi = 0, lo = 0, f_hi = 0, f_lo = 0;
   long double x_prev = 1, f_prev = 0;
   bool prev_valid = false, bracketed = false;
@@ -146,13 +152,13 @@ Ripple solve_ripple(long k) {
     prev_valid = v.has_value();
     if (v) f_prev = *v;
   }
-  if (!bracketed) throw std::runtime_error("odd ripple: no root for k=" + std::to_string(k));
+  if (!bracketed) throw std::runtime_error(what + ": no root for k=" + std::to_string(k));
   // Bisection to the last bit: cheap, and it cannot be misled by rounding noise.
   for (int it = 0; it < 200; ++it) {
     const long double mid = (lo + hi) / 2;
     if (mid <= lo || mid >= hi) break;
     const auto v = f(mid);
-    if (!v) throw std::runtime_error("odd ripple: chain breaks inside the bracket");
+    if (!v) throw std::runtime_error(what + ": chain breaks inside the bracket");
     if ((*v > 0) == (f_lo > 0)) {
       lo = mid;
       f_lo = *v;
@@ -161,7 +167,99 @@ Ripple solve_ripple(long k) {
       f_hi = *v;
     }
   }
-  f(std::fabs(f_hi) < std::fabs(f_lo) ? hi : lo);
+  const long double x = std::fabs(f_hi) < std::fabs(f_lo) ? hi : lo;
+  f(x);
+  return base + 2 * x;
+}
+
+Ripple solve_ripple(long k) {
+  Ripple c;
+  c.floor.resize(static_cast<std::size_t>(k + 2));
+  c.raised.resize(static_cast<std::size_t>(k));
+  shoot(
+      k, [&](long double L) { return march(k, L, c); }, "odd ripple");
+  return c;
+}
+// The other modification (docs/odd-ripple-other.md): the same chain F0 R0 F1 F2 R1 F3 ... below
+// a top Delta(2k) whose row 2k-2 has B0 (j=0) and B1 (j=1) free and whose anchor row has A0 free
+// on the left wall, A2 free (sitting on the floor disk F2) and the rattlers A1, A4, A6, ...,
+// A_{2k-2}.
+struct Other {
+  long double L = 0;
+  std::vector<Vec2L> floor;   // F_0..F_{k+1}
+  std::vector<Vec2L> raised;  // R_0..R_{k-1}
+  Vec2L a0, a2, b0, b1;
+};
+
+// The left cluster for side L and A0 = u e60 on the left wall: R0 touches the corner F0 and A0,
+// F1 sits on the floor at distance 1 from R0 and F2 = F1 + e0; B0 touches A0 and S(2k-3,0), B1
+// touches B0 and S(2k-2,2), A2 touches B1 and A3 = S(2k-1,3). Returns |A2 - F2|^2 - 1 (the
+// cluster's closing contact), or nullopt if a pair of circles does not meet.
+std::optional<long double> other_cluster(long k, long double L, long double u, Other& c) {
+  const long m = 2 * k;
+  c.a0 = D::e60 * u;
+  const auto r0 = meet({0, 0}, c.a0, D::e0);
+  if (!r0 || !(r0->y > 0) || !(r0->y < 1)) return std::nullopt;
+  c.raised[0] = *r0;
+  c.floor[0] = {0, 0};
+  c.floor[1] = {r0->x + std::sqrt((1 - r0->y) * (1 + r0->y)), 0};
+  c.floor[2] = c.floor[1] + D::e0;
+  // The hints pick the intersection right of the line S(2k-3,0) A0 (B0 moves right and down),
+  // and below the lines B0 S(2k-2,2) and B1 A3 (B1 and A2 are pushed down).
+  const auto b0 = meet(c.a0, site(L, m - 3, 0), site(L, m - 2, 0) + Vec2L{0.1L, 0});
+  if (!b0) return std::nullopt;
+  c.b0 = *b0;
+  const auto b1 = meet(c.b0, site(L, m - 2, 2), site(L, m - 2, 1) - Vec2L{0, 0.3L});
+  if (!b1) return std::nullopt;
+  c.b1 = *b1;
+  const auto a2 = meet(c.b1, site(L, m - 1, 3), site(L, m - 1, 2) - Vec2L{0, 0.3L});
+  if (!a2) return std::nullopt;
+  c.a2 = *a2;
+  const Vec2L g = c.a2 - c.floor[2];
+  return dot(g, g) - 1;
+}
+
+// For side L: solves the left cluster for u, then marches R_i (touching F_{i+1} and A_{2i+1})
+// and F_{i+2} for i = 1..k-1; returns F_{k+1}.x - L, or nullopt.
+//
+// At u = u_lat = L - 2k + 1 (A0 on its lattice site) A0 and S(2k-3,0) are 2 apart, so B0, B1
+// and A2 sit on their sites and the closing residual is positive (A2 is about sqrt3 x0 high).
+// Raising A0 along the wall pushes B0, B1 and A2 down and the residual falls through zero at
+// u - u_lat = 0.027 (k = 2), 0.016 (k = 3), 3.8e-3 (k = 10), 2.3e-4 (k = 200); it rises again
+// to a second, unphysical root at u - u_lat ~ 0.39 (k = 3), so the bracket is (u_lat, u_lat + 0.1].
+std::optional<long double> other_march(long k, long double L, Other& c) {
+  c.L = L;
+  const long m = 2 * k;
+  const long double u_lat = L - static_cast<long double>(m - 1);
+  long double lo = u_lat, hi = u_lat + 0.1L;
+  const auto g_hi = other_cluster(k, L, hi, c);
+  if (!g_hi || !(*g_hi < 0)) return std::nullopt;
+  // Near u_lat the circles about A0 and S(2k-3,0) barely meet (or not at all, by rounding): an
+  // invalid cluster counts as the positive side.
+  for (int it = 0; it < 200; ++it) {
+    const long double mid = (lo + hi) / 2;
+    if (mid <= lo || mid >= hi) break;
+    const auto g = other_cluster(k, L, mid, c);
+    if (!g || *g > 0)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  if (!other_cluster(k, L, hi, c)) return std::nullopt;
+  for (long i = 1; i < k; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (!raise(c.floor[u + 1], site(L, m - 1, 2 * i + 1), c.raised[u], c.floor[u + 2]))
+      return std::nullopt;
+  }
+  return c.floor[static_cast<std::size_t>(k + 1)].x - L;
+}
+
+Other solve_other(long k) {
+  Other c;
+  c.floor.resize(static_cast<std::size_t>(k + 2));
+  c.raised.resize(static_cast<std::size_t>(k));
+  shoot(
+      k, [&](long double L) { return other_march(k, L, c); }, "odd ripple (other)");
   return c;
 }
 
@@ -249,6 +347,92 @@ Pattern build_odd_ripple_depressed(long k) {
   if (out.bonds != bonds)
     throw std::logic_error("odd ripple: detected contacts differ from the intended ones for k=" +
                            std::to_string(k));
+  return out;
+}
+
+Pattern build_odd_ripple_other(long k) {
+  if (k < 2) throw std::invalid_argument("Delta(2k+1)+1 (other modification) needs k >= 2");
+  const Other c = solve_other(k);
+  long double L = c.L;
+  const long m = 2 * k;  // the top triangle Delta(m)
+  DiskUnitsPattern pat(L);
+  const int top = pat.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, m);
+  auto s = [&](long i, long j) {
+    return top + static_cast<int>(DiskUnitsPattern::index_in_triangle(m, i - j, j));
+  };
+  const int a0 = s(m - 1, 0), a2 = s(m - 1, 2), a3 = s(m - 1, 3);
+  const int b0 = s(m - 2, 0), b1 = s(m - 2, 1);
+  // The rattlers A1, A4, A6, ..., A_{2k-2}.
+  std::vector<int> rattlers{s(m - 1, 1)};
+  for (long j = 4; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
+
+  std::vector<char> off_lattice(pat.points().size(), 0);
+  for (int i : {a0, a2, b0, b1}) off_lattice[static_cast<std::size_t>(i)] = 1;
+  for (int r : rattlers) off_lattice[static_cast<std::size_t>(r)] = 1;
+  std::vector<Bond> bonds = find_contacts(pat.points(), L, kBondTolerance, off_lattice);
+
+  auto& pts = pat.points();
+  pts[static_cast<std::size_t>(a0)] = c.a0;
+  pts[static_cast<std::size_t>(a2)] = c.a2;
+  pts[static_cast<std::size_t>(b0)] = c.b0;
+  pts[static_cast<std::size_t>(b1)] = c.b1;
+  // The bottom chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1}, as in the depressed pattern.
+  std::vector<int> fl(static_cast<std::size_t>(k + 2)), ra(static_cast<std::size_t>(k));
+  std::vector<int> chain;
+  auto add_floor = [&](long i) {
+    fl[static_cast<std::size_t>(i)] = pat.add(c.floor[static_cast<std::size_t>(i)]);
+    chain.push_back(fl[static_cast<std::size_t>(i)]);
+  };
+  auto add_raised = [&](long i) {
+    ra[static_cast<std::size_t>(i)] = pat.add(c.raised[static_cast<std::size_t>(i)]);
+    chain.push_back(ra[static_cast<std::size_t>(i)]);
+  };
+  add_floor(0);
+  add_raised(0);
+  add_floor(1);
+  for (long i = 1; i < k; ++i) {
+    add_floor(i + 1);
+    add_raised(i);
+  }
+  add_floor(k + 1);
+
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+    bonds.push_back(Bond::pair(chain[i], chain[i + 1]));
+  for (int f : fl) bonds.push_back(Bond::wall(f, Side::Bottom));
+  bonds.push_back(Bond::wall(fl.front(), Side::Left));
+  bonds.push_back(Bond::wall(fl.back(), Side::Right));
+  // The cage contacts (docs/odd-ripple-other.md).
+  const int r0 = ra[0], f2 = fl[2];
+  bonds.push_back(Bond::wall(a0, Side::Left));
+  const int cage[][2] = {
+      {r0, a0}, {a0, b0},          {b0, s(m - 3, 0)},  // A0 slides up the left wall
+      {b0, b1}, {b1, s(m - 2, 2)},                     // B0, B1 (row 2k-2)
+      {b1, a2}, {a2, a3},          {a2, f2}};          // A2 sits on the floor disk F2
+  for (const auto& e : cage) bonds.push_back(Bond::pair(e[0], e[1]));
+  for (long i = 1; i < k; ++i)
+    bonds.push_back(Bond::pair(ra[static_cast<std::size_t>(i)], s(m - 1, 2 * i + 1)));
+  // k = 2: R1 also touches A2 (F2 R1 A3 A2 is a rhombus with the unit diagonal A2 R1; the
+  // geometry forces it, it is not an equation of the solve).
+  if (k == 2) bonds.push_back(Bond::pair(ra[1], a2));
+  std::sort(bonds.begin(), bonds.end());
+
+  PolishOptions opt;
+  opt.tolerance = 1e-17L;
+  const PolishReport rep = polish_bond_system_disk_units(pts, L, bonds, rattlers, opt);
+  if (!(rep.max_residual < 1e-13L))
+    throw std::runtime_error("odd ripple (other): contact system not solved (residual " +
+                             std::to_string(static_cast<double>(rep.max_residual)) + ")");
+  pat.set_side(L);
+  // Rattlers start a little below their sites, inside the cages the ripple opens.
+  for (int r : rattlers) {
+    pts[static_cast<std::size_t>(r)] -= Vec2L{0, 0.25L};
+    pat.mark_rattler(r);
+  }
+  Pattern out = pat.finish({});
+  if (out.bonds != bonds)
+    throw std::logic_error(
+        "odd ripple (other): detected contacts differ from the intended ones for k=" +
+        std::to_string(k));
   return out;
 }
 

@@ -40,7 +40,7 @@ Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req) {
     shape.separator = static_cast<int>(arg(c, "separator", req.k, req.p));
     pat = build_chain_family(shape);
   } else if (c.builder == "odd-ripple") {
-    pat = build_odd_ripple_depressed(req.k);
+    pat = variant == "other" ? build_odd_ripple_other(req.k) : build_odd_ripple_depressed(req.k);
   } else {
     throw CatalogueError(c.id + ": unknown builder '" + c.builder + "' in the catalogue");
   }

@@ -3,12 +3,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <random>
 
-#include "polish/polish.hpp"
+#include "analysis/compare.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/neighbours.hpp"
+#include "pipeline/analyze.hpp"
+#include "polish/polish.hpp"
+#include "sim/billiards.hpp"
+#include "sim/scene.hpp"
 
 namespace tripack {
 namespace {
@@ -208,6 +214,117 @@ TEST(OddRipple, PapersDepressedCagePackings) {
   // The printed d(121) is one unit high in its 15th significant digit (CONSTRUCTIONS §8.3: the
   // exact construction gives 0.06916301888946975...): allow 1.5 units of that digit.
   EXPECT_NEAR(build("odd-ripple", 7).packing.d, 0.0691630188894699L, 1.5e-16L);
+}
+
+// The other modification of Delta(2k+1)+1 (docs/odd-ripple-other.md). GL1995 names it (t29a,
+// t46a: the best; t67b, t92b: second to the depressed cage) but prints no d for it, so the
+// reference values below are measured here, independently of the builder:
+//   tripack billiards 29 --runs 400 --threads 1 -o DIR --format json   (t29a, first at seed 10)
+//   tripack billiards 46 --runs 200 --threads 1 -o DIR --format json   (t46a, first at seed 5)
+//   tripack billiards 16 --runs 200 --threads 1 -o DIR --format json   (t16a33.2, seed 5)
+// then `tripack analyze DIR/LABEL.json --digits 30`: the pipeline relaxes the billiards end state,
+// finds its bonds from the geometry, polishes that bond system in MPFR and certifies it (rigid,
+// strictly positive stress). The built d is long double (~1e-18 relative); 1e-14 leaves room
+// for a few hundred roundings and still separates the depressed cage by 1.1e-4 (29) and
+// 1.3e-5 (46).
+constexpr long double kT16a33 = 0.216227269309781821734634975396L;  // 33 bonds, 1 rattler
+constexpr long double kT29a = 0.152189614060731619481410100113L;    // 63 bonds, 2 rattlers
+constexpr long double kT46a = 0.117209943988838531254933123492L;    // 106 bonds, 3 rattlers
+
+// Billiards from random starts (default scene, seeds 1..max_seeds), each end state near `target`
+// analysed; the first certified one whose d matches `target` to 1e-12.
+// Seeds are tried in order, so the seeds quoted above are found within the first few runs.
+std::optional<pipeline::Analysis> billiards_find(int n, long double target, int max_seeds) {
+  for (int seed = 1; seed <= max_seeds; ++seed) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+    const BilliardsResult sim = run_billiards(default_scene(n), rng);
+    if (std::fabs(sim.packing.d / target - 1) > 1e-3L) continue;  // another packing
+    pipeline::Analysis a = pipeline::analyze_packing(sim.packing, {});
+    if (!a.certified() || std::fabs(a.pattern.packing.d / target - 1) > 1e-12L) continue;
+    return a;
+  }
+  return std::nullopt;
+}
+
+TEST(OddRipple, OtherModificationIsTheBilliardsT29aAndT46a) {
+  // d against the billiards references (above), bond and rattler formulas, and certification.
+  const Pattern t29a = build("odd-ripple", 3, 0, "other");
+  const Pattern t46a = build("odd-ripple", 4, 0, "other");
+  EXPECT_LT(rel(t29a.packing.d, kT29a), 1e-14L);
+  EXPECT_LT(rel(t46a.packing.d, kT46a), 1e-14L);
+  for (long k = 3; k <= 10; ++k) {
+    const Pattern pat = build("odd-ripple", k, 0, "other");
+    const std::string what = "k=" + std::to_string(k);
+    EXPECT_EQ(pat.packing.size(), static_cast<std::size_t>(triangular(2 * k + 1) + 1)) << what;
+    EXPECT_EQ(pat.bonds.size(), static_cast<std::size_t>(6 * k * k + k + 6)) << what;
+    EXPECT_EQ(pat.rattlers.size(), static_cast<std::size_t>(k - 1)) << what;
+    expect_valid_packing(pat, what);
+    const pipeline::Analysis a = pipeline::analyze_packing(pat.packing, {});
+    EXPECT_TRUE(a.certified()) << what << ": " << a.status();
+    EXPECT_EQ(a.pattern.bonds, pat.bonds) << what;
+    EXPECT_EQ(a.pattern.rattlers, pat.rattlers) << what;
+  }
+}
+
+TEST(OddRipple, OtherModificationIsTheSamePackingAsBilliards) {
+  // k = 3, 4, 5: billiards ends in t29a, t46a, t67b (GL1995's labels; d matched to 1e-12 in
+  // the search), and that packing is the builder's: same contact graph (rattlers removed, walls
+  // included) and the same points up to one symmetry of the triangle.
+  for (long k = 3; k <= 5; ++k) {
+    const Pattern built = build("odd-ripple", k, 0, "other");
+    const int n = static_cast<int>(triangular(2 * k + 1) + 1);
+    const auto found = billiards_find(n, built.packing.d, 30);
+    ASSERT_TRUE(found.has_value()) << "n = " << n;
+    EXPECT_EQ(found->pattern.bonds.size(), built.bonds.size()) << n;
+    EXPECT_EQ(found->pattern.rattlers.size(), built.rattlers.size()) << n;
+    const Comparison c = compare_packings(built, found->pattern);
+    EXPECT_TRUE(c.same) << n << ": " << c.reason;
+    EXPECT_TRUE(c.isomorphic) << n << ": " << c.reason;
+  }
+}
+
+TEST(OddRipple, OtherModificationAtK2IsT16a33) {
+  // GL1995 Fig.t16: the optimum t16a33 (.1 and .2 share d and differ in 4 disks). The class
+  // starts at k = 3 in the catalogue (the depressed cage does not exist at k = 2), so the
+  // builder is called directly. At k = 2 the rhombus F2 R1 A3 A2 has the unit diagonal A2 R1:
+  // 33 bonds, one more than 6k^2+k+6.
+  const Pattern pat = build_odd_ripple_other(2);
+  EXPECT_LT(rel(pat.packing.d, kT16a33), 1e-14L);
+  EXPECT_EQ(pat.packing.size(), 16u);
+  EXPECT_EQ(pat.bonds.size(), 33u);
+  EXPECT_EQ(pat.rattlers.size(), 1u);
+  const pipeline::Analysis a = pipeline::analyze_packing(pat.packing, {});
+  EXPECT_TRUE(a.certified()) << a.status();
+  EXPECT_EQ(a.pattern.bonds, pat.bonds);
+  // Billiards (seeds 1..30) ends in both t16a33 packings; the builder's is one of them, and
+  // compare_packings tells the other one apart although d is the same.
+  int same = 0, different = 0;
+  for (int seed = 1; seed <= 30; ++seed) {
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+    const BilliardsResult sim = run_billiards(default_scene(16), rng);
+    if (std::fabs(sim.packing.d / kT16a33 - 1) > 1e-3L) continue;
+    const pipeline::Analysis b = pipeline::analyze_packing(sim.packing, {});
+    if (!b.certified() || std::fabs(b.pattern.packing.d / kT16a33 - 1) > 1e-12L) continue;
+    EXPECT_EQ(b.pattern.bonds.size(), 33u) << "seed " << seed;
+    ++(compare_packings(pat, b.pattern).same ? same : different);
+  }
+  EXPECT_GT(same, 0);
+  EXPECT_GT(different, 0);
+}
+
+TEST(OddRipple, TheTwoModificationsSwapAtK5) {
+  // GL1995 Sec.5: the other modification is the better one for k = 3, 4 (t29a, t46a against
+  // t29b63.2, t46b106.2), the depressed cage from k = 5 on (t67a161.2, t92a228.2 against t67b,
+  // t92b). The relative margins (1.1e-4 at k = 3, 1.3e-5 at k = 4, 8.7e-6 .. 2.9e-6 at k = 5..12)
+  // are far above rounding.
+  for (long k = 3; k <= 12; ++k) {
+    const long double depressed = build("odd-ripple", k, 0, "depressed").packing.d;
+    const long double other = build("odd-ripple", k, 0, "other").packing.d;
+    if (k <= 4)
+      EXPECT_GT(other / depressed - 1, 1e-6L) << k;
+    else
+      EXPECT_GT(depressed / other - 1, 1e-6L) << k;
+  }
 }
 
 TEST(Classes, RecordedBondsAreExactlyTheGeometricContacts) {
