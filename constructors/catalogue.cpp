@@ -106,6 +106,10 @@ ClassInfo parse_class(const YAML::Node& node) {
       vi.bonds = opt_expr(v, "bonds", vctx);
       vi.rattlers = opt_expr(v, "rattlers", vctx);
       vi.is_default = v["default"] && v["default"].as<bool>();
+      vi.k_min = opt_long(v, "k_min", 0, vctx);
+      if (vi.k_min && vi.k_min < c.k_min)
+        throw CatalogueError(vctx + ": k_min " + std::to_string(vi.k_min) +
+                             " is below the class's k_min " + std::to_string(c.k_min));
       c.variants.push_back(std::move(vi));
     }
   }
@@ -286,6 +290,7 @@ std::vector<Member> Catalogue::classify(long long N) const {
 
 const VariantInfo* Catalogue::variant_info(const ClassInfo& c, long k, const std::string& v) const {
   for (const auto& vi : c.variants) {
+    if (k < vi.k_min) continue;
     if (!vi.is_family) {
       if (vi.id == v) return &vi;
       continue;
@@ -303,6 +308,7 @@ const VariantInfo* Catalogue::variant_info(const ClassInfo& c, long k, const std
 std::vector<std::string> Catalogue::variants_at(const ClassInfo& c, long k) const {
   std::vector<std::string> out;
   for (const auto& vi : c.variants) {
+    if (k < vi.k_min) continue;
     if (!vi.is_family) {
       out.push_back(vi.id);
       continue;
@@ -321,10 +327,12 @@ std::string Catalogue::resolve_variant(const ClassInfo& c, long k,
       throw CatalogueError(c.id + " has no variants (got '" + requested + "')");
     return "";
   }
-  if (requested.empty()) {
+  if (requested.empty()) {  // the default, else the first variant that exists at this k
     for (const auto& vi : c.variants)
-      if (vi.is_default) return vi.id;
-    return c.variants.front().id;
+      if (vi.is_default && k >= vi.k_min) return vi.id;
+    const auto here = variants_at(c, k);
+    if (here.empty()) throw CatalogueError(c.id + " has no variant at k = " + std::to_string(k));
+    return here.front();
   }
   if (variant_info(c, k, requested)) return requested;
   std::string list;

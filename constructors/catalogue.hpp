@@ -22,6 +22,8 @@ struct VariantInfo {
   Expression m_min, m_max;
   Expression bonds, rattlers;
   bool is_default = false;
+  long k_min = 0;  // 0: the class's; else the variant exists from this k on (odd-ripple's depressed
+                   // cage needs k >= 3, its other modification exists from k = 2)
 };
 
 struct ReferenceValue {

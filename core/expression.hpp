@@ -1,4 +1,5 @@
-// Small arithmetic expressions for the catalogue's formulas ("Delta(2*k)+1", "2*k-2+sqrt(3)").
+// Small arithmetic expressions for the catalogue's formulas ("Delta(2*k)+1", "2*k-2+sqrt(3)",
+// with Delta, sqrt and max(a, b)).
 // Parsed once, evaluated for any number type: long long for disk and bond counts (division must
 // be exact), long double for lengths, and later multiprecision and exact types. A hand-written
 // evaluator because the Debian parsers (muparser) only evaluate in double.
@@ -153,6 +154,9 @@ T Expression::eval_node(int id, const ExpressionEnv<T>& env) const {
           return values[0] * (values[0] + 1) / 2;
         }
       }
+      // max(a, b): a formula with a small-k exception (odd-ripple other: one more bond at k = 2).
+      if (nd.name == "max" && values.size() == 2)
+        return values[0] < values[1] ? values[1] : values[0];
       if (nd.name == "sqrt" && values.size() == 1) {
         if constexpr (std::is_integral_v<T>) {
           throw ExpressionError("'" + text_ + "': sqrt in an integer formula");

@@ -139,8 +139,11 @@ std::optional<Landmark> catalogue_best(const Catalogue& catalogue, long long n) 
   BestBuild best = build_best_for_n(catalogue, n, settings);
   Landmark mark{std::move(best.best.pattern), ""};
   const ClassInfo& cls = catalogue.find(mark.pattern.provenance.class_id);
-  for (const auto& ref : cls.references)
-    if (ref.n == n && !ref.label.empty()) mark.label = ref.label;
+  const Provenance& member = mark.pattern.provenance;
+  for (const auto& ref : cls.references)  // the first reference of this member and variant
+    if (ref.n == n && !ref.label.empty() && mark.label.empty() &&
+        (ref.variant.empty() || ref.variant == member.variant))
+      mark.label = ref.label;
   if (mark.label.empty())
     mark.label = fmt::format("{} (catalogue)", member_name(mark.pattern.provenance));
   return mark;

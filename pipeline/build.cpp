@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/io.hpp"
@@ -78,10 +79,19 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
   quick.certify = false;  // rank the candidates first, certify only the winner
   quick.digits = 15;
   std::optional<BuildCandidate> best;
+  // Every variant: the default is not always the best (odd-ripple's other modification wins at
+  // k = 2..4, its depressed cage from k = 5); equal d keeps the first (the default).
   for (const auto& m : members) {
-    const BuildResult b = build_and_certify(catalogue, {m.cls->id, m.k, m.p, ""}, quick);
-    result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d});
-    if (!best || b.pattern.packing.d > best->d) best = result.candidates.back();
+    std::vector<std::string> variants = catalogue.variants_at(*m.cls, m.k);
+    if (variants.empty()) variants.push_back("");
+    const std::string first = catalogue.resolve_variant(*m.cls, m.k, "");
+    std::stable_partition(variants.begin(), variants.end(),
+                          [&](const std::string& v) { return v == first; });
+    for (const auto& v : variants) {
+      const BuildResult b = build_and_certify(catalogue, {m.cls->id, m.k, m.p, v}, quick);
+      result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d});
+      if (!best || b.pattern.packing.d > best->d) best = result.candidates.back();
+    }
   }
   const Provenance& win = best->member;
   result.best = build_and_certify(catalogue, {win.class_id, win.k, win.p, win.variant}, settings);

@@ -65,7 +65,8 @@ struct BuildCandidate {
 };
 struct BestBuild {
   BuildResult best;
-  std::vector<BuildCandidate> candidates;  // every member containing n, in catalogue order
+  std::vector<BuildCandidate>
+      candidates;  // every member and variant containing n, in catalogue order
 };
 // Builds every member of the catalogue containing n without certificates, then the one with the
 // largest d with `settings`. Throws std::runtime_error when no class contains n.

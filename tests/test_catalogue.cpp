@@ -63,7 +63,14 @@ TEST(Catalogue, ParameterValidation) {
   EXPECT_THROW(c.check_parameters(c.find("four-delta"), 0, 0), CatalogueError);
   EXPECT_THROW(c.check_parameters(c.find("hexagonal"), 1, 0), CatalogueError);
   EXPECT_THROW(c.check_parameters(c.find("sparse-rows"), 13, 0), CatalogueError);
-  EXPECT_THROW(c.check_parameters(c.find("odd-ripple"), 2, 0), CatalogueError);
+  EXPECT_THROW(c.check_parameters(c.find("odd-ripple"), 1, 0), CatalogueError);
+  // A variant's own k_min: at k = 2 (n = 16) only the other modification exists, and it is what
+  // the class builds there by default.
+  EXPECT_NO_THROW(c.check_parameters(c.find("odd-ripple"), 2, 0));
+  EXPECT_THROW(c.resolve_variant(c.find("odd-ripple"), 2, "depressed"), CatalogueError);
+  EXPECT_EQ(c.resolve_variant(c.find("odd-ripple"), 2, ""), "other");
+  EXPECT_EQ(c.resolve_variant(c.find("odd-ripple"), 3, ""), "depressed");
+  EXPECT_EQ(c.variants_at(c.find("odd-ripple"), 2), std::vector<std::string>{"other"});
   EXPECT_THROW(c.check_parameters(c.find("matrix"), 2, 0), CatalogueError);      // missing p
   EXPECT_THROW(c.check_parameters(c.find("four-delta"), 2, 3), CatalogueError);  // p not taken
   EXPECT_NO_THROW(c.check_parameters(c.find("matrix"), 2, 3));

@@ -36,6 +36,15 @@ TEST(Expression, DeltaAndTheMatrixFormula) {
   EXPECT_EQ(a.eval<long long>(ints(1, 3)), 22);
 }
 
+// max(a, b): the odd-ripple other modification's one extra bond at k = 2 (its R1 touches A2).
+TEST(Expression, MaxForASmallKException) {
+  const auto e = Expression::parse("6*k^2+k+6 + max(0, 3-k)");
+  EXPECT_EQ(e.eval<long long>(ints(2)), 33);   // t16a33
+  EXPECT_EQ(e.eval<long long>(ints(3)), 63);   // t29a
+  EXPECT_EQ(e.eval<long long>(ints(4)), 106);  // t46a
+  EXPECT_EQ(Expression::parse("max(2.5, -1)").eval<long double>({}), 2.5L);
+}
+
 TEST(Expression, RealsAndSqrt) {
   const auto e = Expression::parse("2*k-2+sqrt(3)");
   ExpressionEnv<long double> env;

@@ -15,6 +15,7 @@
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"
+#include "pipeline/build.hpp"
 #include "sim/billiards.hpp"
 
 namespace tripack::pipeline {
@@ -23,6 +24,18 @@ namespace {
 const Catalogue& catalogue() {
   static const Catalogue c = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
   return c;
+}
+
+// `build --n` weighs every variant, not only the default: GL1995 sec. 5 says the other
+// modification of Delta(2k+1)+1 is the better one at k = 3, 4 and the depressed one from k = 5.
+TEST(Pipeline, BuildBestForNWeighsEveryVariant) {
+  BuildSettings quick;
+  quick.certify = false;
+  EXPECT_EQ(build_best_for_n(catalogue(), 29, quick).best.pattern.provenance.variant, "other");
+  EXPECT_EQ(build_best_for_n(catalogue(), 46, quick).best.pattern.provenance.variant, "other");
+  const BestBuild at67 = build_best_for_n(catalogue(), 67, quick);
+  EXPECT_EQ(at67.best.pattern.provenance.variant, "depressed");
+  EXPECT_EQ(at67.candidates.size(), 2u);  // both variants were built
 }
 
 TEST(Pipeline, AnalyzeOfBuildFindsTheBuildersBondsAndCertifiesEveryClass) {
