@@ -32,4 +32,7 @@ Pattern build_chain_family(const ChainFamilyShape& shape);
 // Delta(2k+1) + 1 with the depressed cage (CONSTRUCTIONS.md §7), k >= 3.
 Pattern build_odd_ripple_depressed(long k);
 
+// Delta(k+2) - 2, the sparse corner (t43a, t64a; docs/class6.md), k >= 3.
+Pattern build_sparse_corner(long k);
+
 }  // namespace tripack
