@@ -35,4 +35,7 @@ Pattern build_odd_ripple_depressed(long k);
 // t92b), k >= 2.
 Pattern build_odd_ripple_other(long k);
 
+// Delta(k+2) - 2, the sparse corner (t43a, t64a; docs/class6.md), k >= 3.
+Pattern build_sparse_corner(long k);
+
 }  // namespace tripack

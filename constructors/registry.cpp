@@ -41,6 +41,8 @@ Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req) {
     pat = build_chain_family(shape);
   } else if (c.builder == "odd-ripple") {
     pat = variant == "other" ? build_odd_ripple_other(req.k) : build_odd_ripple_depressed(req.k);
+  } else if (c.builder == "sparse-corner") {
+    pat = build_sparse_corner(req.k);
   } else {
     throw CatalogueError(c.id + ": unknown builder '" + c.builder + "' in the catalogue");
   }
