@@ -36,13 +36,21 @@ for s in "${steps[@]}"; do
       step small "$T" campaign --n 2..34 --runs 2000 --threads "$THREADS" --db "$DB" ;;
     large)  # every n up to 200: 200 runs per n (default scene: slow growth window above n = 40)
       step large "$T" campaign --n 35..200 --runs 200 --threads "$THREADS" --db "$DB" ;;
-    targeted)  # where the default scene is weak or the paper asks (docs/findings.md says why)
-      for n in 43 53 64; do  # Delta(k+2)-2: slow constant growth concentrates runs on the top
-        step "slow-$n" "$T" campaign --n "$n" --runs 400 --seed 100001 --threads "$THREADS" \
-          --scene scenes/slow-growth.yaml --db "$DB"
+    targeted)  # where the default scene is weak or the paper asks (docs/atlas.md says why).
+      # Seeds 100001.. : constant growth 0.01 (scenes/constant-growth.yaml). Delta(k+2)-2 at
+      # k = 8..12 (the windowed default never found t53a) and the n whose sparse-corner member
+      # cannot be certified (k = 15..17: 151, 169, 188), so that the atlas beats it with a
+      # certified packing.
+      step const-53 "$T" campaign --n 53 --runs 2000 --seed 100001 --threads "$THREADS" \
+        --scene scenes/constant-growth.yaml --db "$DB"
+      for n in 64 76 89 103 151 169 188; do
+        step "const-$n" "$T" campaign --n "$n" --runs 1000 --seed 100001 --threads "$THREADS" \
+          --scene scenes/constant-growth.yaml --db "$DB"
       done
-      for n in 29 46 67 88 92 117 121; do  # Delta(2k+1)+1 and Delta(2k+3)-3: 1000 more runs
-        step "more-$n" "$T" campaign --n "$n" --runs 1000 --seed 200001 --threads "$THREADS" \
+      # Seeds 200001.. : 600 more default-scene runs where the paper ranks two modifications or
+      # says a class pattern gives way (Delta(2k+1)+1: 46, 67, 92, 121; Delta(2k+3)-3: 88, 117).
+      for n in 46 67 88 92 117 121; do
+        step "more-$n" "$T" campaign --n "$n" --runs 600 --seed 200001 --threads "$THREADS" \
           --db "$DB"
       done ;;
     stress)  # GL1995's matrix stress set from random starts: does billiards find n_p(k)?
