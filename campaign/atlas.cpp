@@ -135,6 +135,16 @@ NOutcome candidates_of(const Catalogue& catalogue, long long n,
       out.errors.push_back(fmt::format("n = {}: builder {}: {}", n, name, e.what()));
     }
   }
+  // The rattlers' places at the polish's digits (their long double places can overlap a
+  // neighbour by 1e-15 d when the cage is that narrow).
+  for (auto& c : out.candidates)
+    if (c.polish && c.polish->converged && !c.pattern.rattlers.empty()) {
+      const double room = centre_rattlers_multiprecision(*c.polish, c.pattern.rattlers);
+      if (room < -1e-25)
+        out.errors.push_back(fmt::format(
+            "n = {}: a rattler overlaps its cage by {:.2g} d after centring at {} digits", n, -room,
+            digits));
+    }
   return out;
 }
 

@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "polish/bond_system.hpp"
@@ -294,6 +296,145 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
 }  // namespace tripack
 
 namespace tripack {
+
+namespace {
+
+// The constraints on a rattler's centre (px, py) in the unit triangle: each neighbour's distance
+// minus d (constraint k >= 0) and the distance to each side (-1 floor, -2 left, -3 right); the
+// clearance is their minimum.
+struct Cage {
+  std::vector<const Mp*> qx, qy;  // neighbour centres
+  mpfr_prec_t prec;
+  Mp d, root3, t, u, v, w;
+  Cage(mpfr_prec_t p, const std::string& d_text) : prec(p), d(p), root3(p), t(p), u(p), v(p), w(p) {
+    mpfr_set_str(d.get(), d_text.c_str(), 10, kRnd);
+    mpfr_sqrt_ui(root3.get(), 3, kRnd);
+  }
+  // Constraint c's value at (px, py) into out.
+  void value(int c, const Mp& px, const Mp& py, Mp& out) {
+    if (c >= 0) {
+      mpfr_sub(u.get(), px.get(), qx[static_cast<std::size_t>(c)]->get(), kRnd);
+      mpfr_sub(v.get(), py.get(), qy[static_cast<std::size_t>(c)]->get(), kRnd);
+      mpfr_hypot(out.get(), u.get(), v.get(), kRnd);
+      mpfr_sub(out.get(), out.get(), d.get(), kRnd);
+    } else if (c == -1) {
+      mpfr_set(out.get(), py.get(), kRnd);
+    } else {
+      if (c == -2)
+        mpfr_set(t.get(), px.get(), kRnd);
+      else
+        mpfr_ui_sub(t.get(), 1, px.get(), kRnd);
+      mpfr_mul(t.get(), t.get(), root3.get(), kRnd);
+      mpfr_sub(t.get(), t.get(), py.get(), kRnd);
+      mpfr_div_ui(out.get(), t.get(), 2, kRnd);
+    }
+  }
+  int constraints() const { return static_cast<int>(qx.size()); }
+  void clearance(const Mp& px, const Mp& py, Mp& out) {
+    mpfr_set_inf(out.get(), 1);
+    for (int k = -3; k < constraints(); ++k) {
+      value(k, px, py, w);
+      mpfr_min(out.get(), out.get(), w.get(), kRnd);
+    }
+  }
+  // Unit gradient of constraint c at (px, py), in double (a search direction only).
+  std::pair<double, double> gradient(int c, const Mp& px, const Mp& py) {
+    if (c == -1) return {0, 1};
+    if (c == -2) return {std::sqrt(3.0) / 2, -0.5};
+    if (c == -3) return {-std::sqrt(3.0) / 2, -0.5};
+    const double gx =
+        mpfr_get_d(px.get(), kRnd) - mpfr_get_d(qx[static_cast<std::size_t>(c)]->get(), kRnd);
+    const double gy =
+        mpfr_get_d(py.get(), kRnd) - mpfr_get_d(qy[static_cast<std::size_t>(c)]->get(), kRnd);
+    const double g = std::hypot(gx, gy);
+    return g > 0 ? std::pair{gx / g, gy / g} : std::pair{0.0, 0.0};
+  }
+};
+
+}  // namespace
+
+double centre_rattlers_multiprecision(MultiprecisionPolish& polish,
+                                      const std::vector<int>& rattlers) {
+  if (rattlers.empty() || !polish.converged) return std::numeric_limits<double>::infinity();
+  const int digits = polish.digits;
+  const auto prec = static_cast<mpfr_prec_t>(std::ceil((digits + 10) * 3.3219280948873623)) + 8;
+  const std::size_t n = polish.points.size();
+  std::vector<Mp> x(n, Mp(prec)), y(n, Mp(prec));
+  std::vector<double> xd(n), yd(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    mpfr_set_str(x[i].get(), polish.points[i][0].c_str(), 10, kRnd);
+    mpfr_set_str(y[i].get(), polish.points[i][1].c_str(), 10, kRnd);
+    xd[i] = mpfr_get_d(x[i].get(), kRnd);
+    yd[i] = mpfr_get_d(y[i].get(), kRnd);
+  }
+  const double d_double = std::stod(polish.d);
+  Mp floor_step(prec), h(prec), best(prec), trial_c(prec), tx(prec), ty(prec), band(prec), c(prec);
+  mpfr_set_si(floor_step.get(), -(digits + 4), kRnd);
+  mpfr_exp10(floor_step.get(), floor_step.get(), kRnd);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int r : rattlers) {
+    const auto ri = static_cast<std::size_t>(r);
+    Cage cage(prec, polish.d);
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != ri && std::hypot(xd[j] - xd[ri], yd[j] - yd[ri]) < 2.5 * d_double) {
+        cage.qx.push_back(&x[j]);
+        cage.qy.push_back(&y[j]);
+      }
+    Mp& px = x[ri];
+    Mp& py = y[ri];
+    cage.clearance(px, py, best);
+    mpfr_set_d(h.get(), 0.25 * d_double, kRnd);
+    for (int moves = 0; mpfr_cmp(h.get(), floor_step.get()) > 0; ++moves) {
+      // Directions: 8 fixed, the gradients of the constraints within 2h of the minimum, and the
+      // bisectors of every pair of them (the ridge between two active constraints).
+      std::vector<std::pair<double, double>> dirs{{1, 0},
+                                                  {-1, 0},
+                                                  {0, 1},
+                                                  {0, -1},
+                                                  {M_SQRT1_2, M_SQRT1_2},
+                                                  {-M_SQRT1_2, M_SQRT1_2},
+                                                  {M_SQRT1_2, -M_SQRT1_2},
+                                                  {-M_SQRT1_2, -M_SQRT1_2}};
+      mpfr_mul_2ui(band.get(), h.get(), 1, kRnd);
+      mpfr_add(band.get(), band.get(), best.get(), kRnd);
+      std::vector<std::pair<double, double>> active;
+      for (int k = -3; k < cage.constraints(); ++k) {
+        cage.value(k, px, py, c);
+        if (mpfr_cmp(c.get(), band.get()) <= 0) active.push_back(cage.gradient(k, px, py));
+      }
+      for (std::size_t a = 0; a < active.size(); ++a) {
+        dirs.push_back(active[a]);
+        for (std::size_t b = a + 1; b < active.size(); ++b) {
+          const double bx = active[a].first + active[b].first;
+          const double by = active[a].second + active[b].second;
+          const double g = std::hypot(bx, by);
+          if (g > 1e-12) dirs.push_back({bx / g, by / g});
+        }
+      }
+      bool moved = false;
+      for (const auto& [dx, dy] : dirs) {
+        mpfr_mul_d(tx.get(), h.get(), dx, kRnd);
+        mpfr_add(tx.get(), tx.get(), px.get(), kRnd);
+        mpfr_mul_d(ty.get(), h.get(), dy, kRnd);
+        mpfr_add(ty.get(), ty.get(), py.get(), kRnd);
+        cage.clearance(tx, ty, trial_c);
+        if (mpfr_cmp(trial_c.get(), best.get()) > 0) {
+          mpfr_swap(best.get(), trial_c.get());
+          mpfr_set(px.get(), tx.get(), kRnd);
+          mpfr_set(py.get(), ty.get(), kRnd);
+          moved = true;
+        }
+      }
+      if (!moved || moves == 64) {
+        mpfr_div_2ui(h.get(), h.get(), 1, kRnd);
+        moves = 0;
+      }
+    }
+    smallest = std::min(smallest, mpfr_get_d(best.get(), kRnd) / d_double);
+    polish.points[ri] = {fixed(px.get(), digits), fixed(py.get(), digits)};
+  }
+  return smallest;
+}
 
 std::string radius_or_side_from_d(const std::string& d, bool radius, int digits) {
   const auto prec = static_cast<mpfr_prec_t>(std::ceil((digits + 10) * 3.3219280948873623)) + 8;

@@ -38,6 +38,18 @@ struct MultiprecisionPolish {
 MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vector<Bond>& bonds,
                                            const std::vector<int>& rattlers, int digits);
 
+// Moves every rattler of a converged polish to the centre of its cage, the point of largest
+// clearance (its distance to the nearest other centre minus d, or to the nearest side), found by
+// a compass search in MPFR whose steps shrink to 10^-(digits+4) of the side; besides 8 fixed
+// directions it tries the gradients of the constraints that are nearly active and their
+// bisectors, so it follows the ridges of the max-min. Needed because polish_multiprecision keeps
+// the rattlers' long double places, and a cage narrower than long double's resolution (the
+// rattler of t160a: room below 1e-15 d) leaves the rattler overlapping its neighbours at 30
+// digits. Returns the smallest clearance reached, in units of d (>= 0 up to 10^-digits when the
+// cages have room; +inf without rattlers). polish.points change; d and the rest do not.
+double centre_rattlers_multiprecision(MultiprecisionPolish& polish,
+                                      const std::vector<int>& rattlers);
+
 // The radius r = d / (2 (1 + sqrt3 d)) (radius = true) or the side S = 2/d + 2 sqrt3 (false) of
 // SPEC §1 from a decimal d, to `digits` significant digits in MPFR: a d polished to 50 digits
 // keeps its 50 digits in the user's convention.

@@ -3,11 +3,12 @@
 #include <gtest/gtest.h>
 #include <mpfr.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "polish/polish_mp.hpp"
 #include "constructors/builders.hpp"
+#include "polish/polish_mp.hpp"
 
 namespace tripack {
 namespace {
@@ -187,6 +188,31 @@ TEST(Multiprecision, RattlersKeepTheirStartCoordinates) {
     EXPECT_NEAR(std::stold(mp.points[i][0]), pat.packing.points[i].x, 1e-30L);
     EXPECT_NEAR(std::stold(mp.points[i][1]), pat.packing.points[i].y, 1e-30L);
   }
+}
+
+// A rattler in a cage only 1e-20 d wider than the disk: three neighbours at d (1 + 1e-20) from
+// the cage's centre (0.5, 0.3), 40-digit coordinates (mpmath). Its long double place, 1e-15 off
+// the centre, overlaps them (below long double's resolution); the MPFR centring must find the
+// room: clearance 1e-20 d, every distance >= d to the 30 digits written.
+TEST(Multiprecision, RattlersAreCentredInCagesNarrowerThanLongDouble) {
+  MultiprecisionPolish mp;
+  mp.digits = 30;
+  mp.converged = true;
+  mp.d = "0.100000000000000000000000000000";
+  mp.L = "10.0000000000000000000000000000";
+  mp.points = {{"0.5", "0.400000000000000000001"},
+               {"0.4133974596215561353227616575209219430061", "0.2499999999999999999995"},
+               {"0.5866025403784438646772383424790780569939", "0.2499999999999999999995"},
+               {"0.500000000000001", "0.299999999999999"}};  // the rattler, 1.4e-15 off centre
+  const double room = centre_rattlers_multiprecision(mp, {3});
+  EXPECT_GT(room, 0.9e-20);
+  EXPECT_LT(room, 1.1e-20);
+  // Its new place, read back in long double (1e-19 absolute), is the cage's centre.
+  EXPECT_NEAR(static_cast<double>(std::stold(mp.points[3][0]) - 0.5L), 0, 1e-18);
+  EXPECT_NEAR(static_cast<double>(std::stold(mp.points[3][1]) - 0.3L), 0, 1e-18);
+  EXPECT_EQ(mp.points[0][0], "0.5");  // the others untouched
+  // Without rattlers (or an unconverged polish) nothing moves.
+  EXPECT_EQ(centre_rattlers_multiprecision(mp, {}), std::numeric_limits<double>::infinity());
 }
 
 TEST(Multiprecision, EvenRippleN254To50Digits) {
