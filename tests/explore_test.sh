@@ -49,19 +49,35 @@ check "DOM has the delta plot" grep -q '<img src="delta.svg"' "$tmp/dom.html"
 rows=$(grep -c '<a href="packings/' "$tmp/dom.html")
 csv_rows=$(($(wc -l <"$tmp/report/packings.csv") - 1))
 check "DOM lists every packing ($rows vs $csv_rows)" [ "$rows" -eq "$csv_rows" ]
+# The atlas (issue 12; the project's data/atlas.csv, shown by default): its best row of every n
+# in the page with a diagram, its table and files copied, the tight/loose table.
+atlas_csv="$(dirname "$0")/../data/atlas.csv"
+if [ -f "$atlas_csv" ]; then
+  best_rows=$(awk -F, 'NR > 1 && $2 == 1' "$atlas_csv" | wc -l)
+  dom_rows=$(grep -c '<tr id="atlas-t' "$tmp/dom.html")
+  check "DOM has the atlas's best row of every n ($dom_rows vs $best_rows)" [ "$dom_rows" -eq "$best_rows" ]
+  check "atlas table copied" cmp -s "$atlas_csv" "$tmp/report/atlas/atlas.csv"
+  check "atlas files copied" [ "$(ls "$tmp/report/atlas/atlas" | wc -l)" -eq "$(($(wc -l <"$atlas_csv") - 1))" ]
+  check "atlas diagram of n = 53" [ -s "$tmp/report/diagrams/atlas-t53a.png" ]
+  check "DOM has the atlas's tight/loose table" grep -q 'id="atlas-gaps"' "$tmp/dom.html"
+  check "delta plot has the atlas" grep -q 'atlas best' "$tmp/report/delta.svg"
+fi
 check "page fetches nothing (no fetch/XHR)" bash -c "! grep -qE 'fetch\(|XMLHttpRequest' '$tmp/report/index.html'"
 [ -n "${KEEP_SCREENSHOT:-}" ] && cp "$tmp/page.png" "$KEEP_SCREENSHOT"
 
 # Bad input: one line on stderr, non-zero exit.
-err=$("$TRIPACK" explore --max-n 10 --out /proc/forbidden/report 2>&1 >/dev/null)
+err=$("$TRIPACK" explore --max-n 10 --atlas none --out /proc/forbidden/report 2>&1 >/dev/null)
 check "unwritable --out ($err)" bash -c "[ \$(wc -l <<<'$err') -eq 1 ] && grep -q 'cannot write' <<<'$err'"
-err=$(TRIPACK_GNUPLOT=/nonexistent "$TRIPACK" explore --max-n 10 --out "$tmp/r2" 2>&1 >/dev/null)
+err=$(TRIPACK_GNUPLOT=/nonexistent "$TRIPACK" explore --max-n 10 --atlas none --out "$tmp/r2" 2>&1 >/dev/null)
 check "missing gnuplot names the package ($err)" bash -c "grep -q 'gnuplot-nox' <<<'$err'"
-err=$("$TRIPACK" explore --max-n 3000 --out "$tmp/r3" 2>&1 >/dev/null & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo "rc=$?")
+err=$("$TRIPACK" explore --max-n 3000 --atlas none --out "$tmp/r3" 2>&1 >/dev/null & pid=$!; sleep 3; kill -INT $pid; wait $pid; echo "rc=$?")
 check "large --max-n warns with the estimated cost" bash -c "grep -q 'estimated at' <<<'$err'"
 
+err=$("$TRIPACK" explore --max-n 10 --atlas "$tmp/nothere.csv" --out "$tmp/r5" 2>&1 >/dev/null)
+check "a missing --atlas is one line ($err)" bash -c "[ \$(wc -l <<<'$err') -eq 1 ] && grep -q 'cannot read the atlas table' <<<'$err'"
+
 # Ctrl-C mid-run: a consistent report of what finished, saying so; non-zero exit.
-"$TRIPACK" explore --max-n 120 --out "$tmp/r4" >/dev/null 2>"$tmp/err4.txt" &
+"$TRIPACK" explore --max-n 120 --atlas none --out "$tmp/r4" >/dev/null 2>"$tmp/err4.txt" &
 pid=$!
 sleep 4
 kill -INT "$pid"

@@ -1,0 +1,121 @@
+// campaign/atlas + report/atlas_report (issue 12): the atlas merges a campaign's database with the
+// builders, and the committed data/atlas.csv is never below a builder. (tests/atlas_data_test.cpp
+// checks the committed files themselves without tripack's code.)
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "campaign/atlas.hpp"
+#include "campaign/campaign.hpp"
+#include "constructors/registry.hpp"
+#include "pipeline/explore.hpp"
+#include "campaign/atlas_files.hpp"
+
+namespace tripack {
+namespace {
+
+std::filesystem::path fresh_dir(const std::string& name) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("tripack_atlas_" + std::to_string(getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// For every catalogue member with n <= 200, the committed atlas's best d is at least the
+// builder's (the atlas takes every builder as a candidate; 1e-14: the builders' long double d).
+TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
+  const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
+  const auto entries =
+      campaign::read_atlas(std::filesystem::path(TRIPACK_SOURCE_DIR) / "data" / "atlas.csv");
+  std::map<long long, long double> best;
+  for (const auto& e : entries)
+    if (e.rank == 1) best[e.n] = std::stold(e.d);
+  int members = 0;
+  for (const auto& member : pipeline::class_members_up_to(catalogue, 200)) {
+    const Pattern built = build_pattern(catalogue, member);
+    const long long n = static_cast<long long>(built.packing.size());
+    if (n < 2) continue;
+    ASSERT_TRUE(best.count(n)) << "n = " << n << " is not in the atlas";
+    EXPECT_GE(best[n], built.packing.d * (1 - 1e-14L))
+        << member.class_id << " k=" << member.k << " p=" << member.p << " (n = " << n << ")";
+    ++members;
+  }
+  EXPECT_GT(members, 60);
+}
+
+// A small campaign and the builders merged: every n gets a certified best row at least as good
+// as its builders, polished to 30 digits; a packing both found is one row naming both sources.
+TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
+  const auto dir = fresh_dir("merge");
+  campaign::CampaignRequest request;
+  request.n_first = 10;
+  request.n_last = 13;
+  request.runs = 6;
+  request.threads = 2;
+  request.db = (dir / "runs.db").string();
+  campaign::run_campaign(request, nullptr, {});
+  const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
+  campaign::AtlasSettings settings;
+  settings.n_first = 9;  // n = 9 has no run: its builder (Delta(4)-1) alone
+  settings.n_last = 13;
+  settings.ranked_first = 12;
+  settings.ranked_last = 12;
+  settings.ranked_count = 3;
+  const auto atlas = campaign::build_atlas(catalogue, request.db, settings, nullptr, {});
+  EXPECT_TRUE(atlas.errors.empty());
+  EXPECT_TRUE(atlas.missing.empty());
+  std::map<long long, int> rows_of_n;
+  for (const auto& row : atlas.rows) {
+    ++rows_of_n[row.n];
+    EXPECT_TRUE(row.certified) << row.label;
+    EXPECT_EQ(row.points.size(), static_cast<std::size_t>(row.n));
+    EXPECT_EQ(row.d.size(), 32u) << row.d;  // "0." and 30 digits: every d here is in (0.1, 1)
+    EXPECT_NEAR(static_cast<double>(std::stold(row.d) - row.pattern.packing.d), 0, 1e-17);
+  }
+  for (long long n = 9; n <= 13; ++n) EXPECT_GE(rows_of_n[n], 1) << "n = " << n;
+  EXPECT_LE(rows_of_n[12], 3);
+  EXPECT_EQ(rows_of_n[11], 1);
+  for (const auto& b : atlas.builders) {
+    const auto& best = *std::find_if(atlas.rows.begin(), atlas.rows.end(),
+                                     [&](const auto& r) { return r.n == b.n; });
+    EXPECT_GE(std::stold(best.d), std::stold(b.d) * (1 - 1e-20L)) << b.member;
+  }
+  // t12a = 4Delta(2): the builders of four classes and the campaign, one row.
+  const auto& t12a = atlas.rows[static_cast<std::size_t>(
+      std::find_if(atlas.rows.begin(), atlas.rows.end(), [](const auto& r) { return r.n == 12; }) -
+      atlas.rows.begin())];
+  EXPECT_EQ(t12a.label.substr(0, 4), "t12a");
+  EXPECT_NE(t12a.source.find("builder four-delta k=2"), std::string::npos) << t12a.source;
+  EXPECT_NE(t12a.source.find("billiards seed"), std::string::npos) << t12a.source;
+  // Written and read back: the same rows; every file named exists.
+  campaign::write_atlas(atlas, dir / "data");
+  const auto entries = campaign::read_atlas(dir / "data" / "atlas.csv");
+  ASSERT_EQ(entries.size(), atlas.rows.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    EXPECT_EQ(entries[i].label, atlas.rows[i].label);
+    EXPECT_EQ(entries[i].d, atlas.rows[i].d);
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "data" / entries[i].file));
+  }
+}
+
+TEST(Atlas, AMalformedTableIsOneLineNamingTheFile) {
+  const auto dir = fresh_dir("bad");
+  std::ofstream(dir / "atlas.csv") << "n,d\n2,1\n";
+  try {
+    campaign::read_atlas(dir / "atlas.csv");
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("atlas.csv:1: not a tripack atlas table"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tripack
