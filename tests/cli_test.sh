@@ -45,7 +45,8 @@ expect_error "unknown class" "unknown class 'nonsense'" build nonsense --k 2
 expect_error "k below 1" "below the valid range" build four-delta --k 0
 expect_error "negative k" "below the valid range" build twin --k -3
 expect_error "k above the class's range" "above the valid range" build sparse-rows --k 13
-expect_error "k below the class's range" "below the valid range" build odd-ripple --k 2
+expect_error "k below the class's range" "below the valid range" build odd-ripple --k 1
+expect_error "a variant below its own k range" "has no variant 'depressed'" build odd-ripple --k 2 --variant depressed
 expect_error "matrix without --p" "needs --p" build matrix --k 2
 expect_error "p on a class without p" "takes no --p" build four-delta --k 2 --p 3
 expect_error "bad variant" "no variant 'cavity-5'" build twin --k 3 --variant cavity-5
