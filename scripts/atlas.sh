@@ -43,7 +43,7 @@ for s in "${steps[@]}"; do
       # certified packing.
       step const-53 "$T" campaign --n 53 --runs 2000 --seed 100001 --threads "$THREADS" \
         --scene scenes/constant-growth.yaml --db "$DB"
-      for n in 64 76 89 103 151 169 188; do
+      for n in 64 76 89 103 151 169 187 188; do
         step "const-$n" "$T" campaign --n "$n" --runs 1000 --seed 100001 --threads "$THREADS" \
           --scene scenes/constant-growth.yaml --db "$DB"
       done
