@@ -308,6 +308,12 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
                      if (a.n != b.n) return a.n < b.n;
                      return a.source == "builder" && b.source != "builder";
                    });
+  // A proven optimum is the best packing of its n: a worse local optimum there (sparse-corner
+  // at 13, below sparse-rows' t13a) is no proven optimum.
+  std::map<long long, long double> best_d;
+  for (const auto& r : result.packings) best_d[r.n] = std::max(best_d[r.n], r.pattern.packing.d);
+  for (auto& r : result.packings)
+    r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n] * (1 - 1e-12L);
   result.class_gaps = class_gaps_of(catalogue, result.packings);
   result.interrupted = cancel;
   result.seconds = seconds_since(start);

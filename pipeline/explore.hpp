@@ -45,7 +45,8 @@ struct ExplorePacking {
   std::string verdict;
   std::string source;  // "builder" or "billiards"
   double seconds = 0;
-  bool proven_optimal = false;  // Delta(k) (Oler) or n <= 15 (GL1995 Sec.1)
+  bool proven_optimal =
+      false;  // the best of its n, and n = Delta(k) (Oler) or n <= 15 (GL1995 Sec.1)
 };
 
 // One row of compare.csv.

@@ -59,6 +59,18 @@ TEST(Explore, DeltaOfTriangularNumbersIsZero) {
   EXPECT_GE(seen, 9);  // Delta(2..10) <= 60
 }
 
+// n <= 15 are proven optima (GL1995 sec. 1), but only the best packing of such an n is one: at
+// n = 13 the sparse-corner member (k = 3) is a local optimum below sparse-rows' t13a.
+TEST(Explore, OnlyTheBestPackingOfAProvenNIsMarkedProven) {
+  int at13 = 0;
+  for (const auto& r : small_exploration().packings)
+    if (r.n == 13 && r.source == "builder") {
+      EXPECT_EQ(r.proven_optimal, r.member.class_id == "sparse-rows") << r.member.class_id;
+      ++at13;
+    }
+  EXPECT_GE(at13, 2);
+}
+
 TEST(Explore, DeltaOfFourDeltaDecreasesToSqrt3MinusThreeHalvesAsOneOverK) {
   // GL1995: L(4Delta(k)) = 2k - 2 + sqrt3; with t(2k(k+1)) = (-3 + sqrt(16k^2 + 16k + 1)) / 2,
   // delta - (sqrt3 - 3/2) = 2k + 1/2 - sqrt(16k^2+16k+1)/2 = 3 / (2 (4k + 2 + sqrt(16k^2+16k+1))),
