@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # The main job: install dependencies, build, then explore with the defaults: every class member up
 # to n = 300 built and certified, billiards runs for small n and the matrix stress set, compared,
-# and the report written to ./report (open report/index.html).
+# with the atlas (data/atlas.csv) beside them, and the report written to out/report (open
+# out/report/index.html; not ./report, which holds the renderers' sources). Extra arguments go to
+# `tripack explore` (an --out of your own replaces out/report).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
-./build/tripack explore "$@"
+out=(--out out/report)
+for a in "$@"; do [[ $a == --out || $a == --out=* ]] && out=(); done
+./build/tripack explore "${out[@]}" "$@"
