@@ -265,175 +265,149 @@ Other solve_other(long k) {
 
 }  // namespace
 
+namespace {
+
+// What both modifications share: the top Delta(2k) hanging from the apex on its lattice, a few of
+// its disks moved off their sites, the bottom chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1} with
+// its floor, wall and chain contacts, and the finish (polish, rattlers dropped into their cages,
+// the detected contacts checked against the intended ones).
+class RippleFrame {
+ public:
+  RippleFrame(long k, long double L) : k_(k), m_(2 * k), L_(L), pat_(L) {
+    top_ = pat_.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, m_);
+  }
+  // Disk j of row i of the top Delta(2k): i - j steps along e240 and j along e300 from the apex.
+  int site(long i, long j) const {
+    return top_ + static_cast<int>(DiskUnitsPattern::index_in_triangle(m_, i - j, j));
+  }
+  long m() const { return m_; }
+  // The lattice contacts (pairs and side walls) of the disks that stay on their sites; then the
+  // moved disks go to their places.
+  void keep_lattice_except(const std::vector<std::pair<int, Vec2L>>& moved,
+                           const std::vector<int>& rattlers) {
+    std::vector<char> off(pat_.points().size(), 0);
+    for (const auto& mv : moved) off[static_cast<std::size_t>(mv.first)] = 1;
+    for (int r : rattlers) off[static_cast<std::size_t>(r)] = 1;
+    bonds_ = find_contacts(pat_.points(), L_, kBondTolerance, off);
+    for (const auto& [i, p] : moved) pat_.points()[static_cast<std::size_t>(i)] = p;
+  }
+  // The bottom chain and its contacts; floor(i) and raised(i) are F_i and R_i.
+  void add_chain(const std::vector<Vec2L>& floor, const std::vector<Vec2L>& raised) {
+    fl_.assign(static_cast<std::size_t>(k_ + 2), 0);
+    ra_.assign(static_cast<std::size_t>(k_), 0);
+    std::vector<int> chain;
+    auto add_floor = [&](long i) {
+      fl_[static_cast<std::size_t>(i)] = pat_.add(floor[static_cast<std::size_t>(i)]);
+      chain.push_back(fl_[static_cast<std::size_t>(i)]);
+    };
+    auto add_raised = [&](long i) {
+      ra_[static_cast<std::size_t>(i)] = pat_.add(raised[static_cast<std::size_t>(i)]);
+      chain.push_back(ra_[static_cast<std::size_t>(i)]);
+    };
+    add_floor(0);
+    add_raised(0);
+    add_floor(1);
+    for (long i = 1; i < k_; ++i) {
+      add_floor(i + 1);
+      add_raised(i);
+    }
+    add_floor(k_ + 1);
+    for (std::size_t i = 0; i + 1 < chain.size(); ++i)
+      bonds_.push_back(Bond::pair(chain[i], chain[i + 1]));
+    for (int f : fl_) bonds_.push_back(Bond::wall(f, Side::Bottom));
+    bonds_.push_back(Bond::wall(fl_.front(), Side::Left));
+    bonds_.push_back(Bond::wall(fl_.back(), Side::Right));
+  }
+  int floor_disk(long i) const { return fl_[static_cast<std::size_t>(i)]; }
+  int raised_disk(long i) const { return ra_[static_cast<std::size_t>(i)]; }
+  void bond(int i, int j) { bonds_.push_back(Bond::pair(i, j)); }
+  void wall_bond(int i, Side side) { bonds_.push_back(Bond::wall(i, side)); }
+
+  // The shooting start satisfies the system to a few ulp of the coordinates (5e-16 at k = 200).
+  // Accept ~100 ulp (relative to L) rather than the polisher's default: refining further would
+  // cost a sparse QR of the whole triangle here, and the caller's polish refines anyway. Then the
+  // rattlers drop by `drop` into the cages the ripple opens, and the contacts detected from the
+  // geometry must be the intended ones.
+  Pattern finish(const std::vector<int>& rattlers, long double drop, const std::string& name) {
+    std::sort(bonds_.begin(), bonds_.end());
+    PolishOptions opt;
+    opt.tolerance = 1e-17L;
+    auto& pts = pat_.points();
+    const PolishReport rep = polish_bond_system_disk_units(pts, L_, bonds_, rattlers, opt);
+    if (!(rep.max_residual < 1e-13L))
+      throw std::runtime_error(name + ": contact system not solved (residual " +
+                               std::to_string(static_cast<double>(rep.max_residual)) + ")");
+    pat_.set_side(L_);
+    for (int r : rattlers) {
+      pts[static_cast<std::size_t>(r)] -= Vec2L{0, drop};
+      pat_.mark_rattler(r);
+    }
+    Pattern out = pat_.finish({});
+    if (out.bonds != bonds_)
+      throw std::logic_error(
+          name + ": detected contacts differ from the intended ones for k=" + std::to_string(k_));
+    return out;
+  }
+
+ private:
+  long k_, m_;
+  long double L_;
+  DiskUnitsPattern pat_;
+  int top_ = 0;
+  std::vector<int> fl_, ra_;
+  std::vector<Bond> bonds_;
+};
+
+}  // namespace
+
 Pattern build_odd_ripple_depressed(long k) {
   if (k < 3) throw std::invalid_argument("Delta(2k+1)+1 (depressed cage) needs k >= 3");
   const Ripple c = solve_ripple(k);
-  long double L = c.L;
-  const long m = 2 * k;  // the top triangle Delta(m)
-  DiskUnitsPattern pat(L);
-  const int top = pat.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, m);
-  // Disk j of row i: i - j steps along e240 and j along e300 from the apex.
-  auto s = [&](long i, long j) {
-    return top + static_cast<int>(DiskUnitsPattern::index_in_triangle(m, i - j, j));
-  };
+  RippleFrame f(k, c.L);
+  const long m = f.m();  // the top triangle Delta(m)
+  auto s = [&](long i, long j) { return f.site(i, j); };
   const int a0 = s(m - 1, 0), a1 = s(m - 1, 1), a3 = s(m - 1, 3);
   const int b1 = s(m - 2, 1), b2 = s(m - 2, 2);
-  std::vector<int> rattlers;
+  std::vector<int> rattlers;  // A2, A4, ..., A_{2k-2}
   for (long j = 2; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
-
-  // Lattice bonds (pairs and side walls) among the disks that stay on their sites.
-  std::vector<char> off_lattice(pat.points().size(), 0);
-  for (int i : {a1, a3, b1, b2}) off_lattice[static_cast<std::size_t>(i)] = 1;
-  for (int r : rattlers) off_lattice[static_cast<std::size_t>(r)] = 1;
-  std::vector<Bond> bonds = find_contacts(pat.points(), L, kBondTolerance, off_lattice);
-
-  auto& pts = pat.points();
-  pts[static_cast<std::size_t>(a1)] = c.a1;
-  pts[static_cast<std::size_t>(a3)] = c.a3;
-  pts[static_cast<std::size_t>(b1)] = c.b1;
-  pts[static_cast<std::size_t>(b2)] = c.b2;
-  // The bottom chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1}.
-  std::vector<int> fl(static_cast<std::size_t>(k + 2)), ra(static_cast<std::size_t>(k));
-  std::vector<int> chain;
-  auto add_floor = [&](long i) {
-    fl[static_cast<std::size_t>(i)] = pat.add(c.floor[static_cast<std::size_t>(i)]);
-    chain.push_back(fl[static_cast<std::size_t>(i)]);
-  };
-  auto add_raised = [&](long i) {
-    ra[static_cast<std::size_t>(i)] = pat.add(c.raised[static_cast<std::size_t>(i)]);
-    chain.push_back(ra[static_cast<std::size_t>(i)]);
-  };
-  add_floor(0);
-  add_raised(0);
-  add_floor(1);
-  for (long i = 1; i < k; ++i) {
-    add_floor(i + 1);
-    add_raised(i);
-  }
-  add_floor(k + 1);
-
-  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
-    bonds.push_back(Bond::pair(chain[i], chain[i + 1]));
-  for (int f : fl) bonds.push_back(Bond::wall(f, Side::Bottom));
-  bonds.push_back(Bond::wall(fl.front(), Side::Left));
-  bonds.push_back(Bond::wall(fl.back(), Side::Right));
+  f.keep_lattice_except({{a1, c.a1}, {a3, c.a3}, {b1, c.b1}, {b2, c.b2}}, rattlers);
+  f.add_chain(c.floor, c.raised);
   // The contacts of the depressed cage (CONSTRUCTIONS.md §7).
-  const int r0 = ra[0], r1 = ra[1], f1 = fl[1];
+  const int r0 = f.raised_disk(0), r1 = f.raised_disk(1), f1 = f.floor_disk(1);
   const int cage[][2] = {
       {r0, a0},          {r0, a1}, {f1, a1},          {a1, a0}, {a1, b1},  // the depressed disk A1
       {b1, s(m - 2, 0)}, {b1, b2}, {b2, s(m - 3, 1)}, {b2, a3},            // B1, B2 (row 2k-2)
       {a3, s(m - 2, 3)}, {a3, r1}};                                        // A3
-  for (const auto& e : cage) bonds.push_back(Bond::pair(e[0], e[1]));
-  for (long i = 2; i < k; ++i)
-    bonds.push_back(Bond::pair(ra[static_cast<std::size_t>(i)], s(m - 1, 2 * i + 1)));
-  std::sort(bonds.begin(), bonds.end());
-
-  // The shooting start satisfies the system to a few ulp of the coordinates (5e-16 at k = 200).
-  // Accept ~100 ulp (relative to L) rather than the polisher's default: refining further would
-  // cost a sparse QR of the whole triangle here, and the caller's polish refines anyway.
-  PolishOptions opt;
-  opt.tolerance = 1e-17L;
-  const PolishReport rep = polish_bond_system_disk_units(pts, L, bonds, rattlers, opt);
-  if (!(rep.max_residual < 1e-13L))
-    throw std::runtime_error("odd ripple: contact system not solved (residual " +
-                             std::to_string(static_cast<double>(rep.max_residual)) + ")");
-  pat.set_side(L);
-  // Rattlers start a little below their sites, inside the cages the ripple opens.
-  for (long j = 2; j < m - 1; j += 2) {
-    pts[static_cast<std::size_t>(s(m - 1, j))] = site(L, m - 1, j) - Vec2L{0, 0.2L};
-    pat.mark_rattler(s(m - 1, j));
-  }
-  Pattern out = pat.finish({});
-  if (out.bonds != bonds)
-    throw std::logic_error("odd ripple: detected contacts differ from the intended ones for k=" +
-                           std::to_string(k));
-  return out;
+  for (const auto& e : cage) f.bond(e[0], e[1]);
+  for (long i = 2; i < k; ++i) f.bond(f.raised_disk(i), s(m - 1, 2 * i + 1));
+  return f.finish(rattlers, 0.2L, "odd ripple");
 }
 
 Pattern build_odd_ripple_other(long k) {
   if (k < 2) throw std::invalid_argument("Delta(2k+1)+1 (other modification) needs k >= 2");
   const Other c = solve_other(k);
-  long double L = c.L;
-  const long m = 2 * k;  // the top triangle Delta(m)
-  DiskUnitsPattern pat(L);
-  const int top = pat.add_triangle({L / 2, L * kSqrt3 / 2}, D::e240, D::e300, m);
-  auto s = [&](long i, long j) {
-    return top + static_cast<int>(DiskUnitsPattern::index_in_triangle(m, i - j, j));
-  };
+  RippleFrame f(k, c.L);
+  const long m = f.m();  // the top triangle Delta(m)
+  auto s = [&](long i, long j) { return f.site(i, j); };
   const int a0 = s(m - 1, 0), a2 = s(m - 1, 2), a3 = s(m - 1, 3);
   const int b0 = s(m - 2, 0), b1 = s(m - 2, 1);
-  // The rattlers A1, A4, A6, ..., A_{2k-2}.
-  std::vector<int> rattlers{s(m - 1, 1)};
+  std::vector<int> rattlers{s(m - 1, 1)};  // A1, A4, A6, ..., A_{2k-2}
   for (long j = 4; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
-
-  std::vector<char> off_lattice(pat.points().size(), 0);
-  for (int i : {a0, a2, b0, b1}) off_lattice[static_cast<std::size_t>(i)] = 1;
-  for (int r : rattlers) off_lattice[static_cast<std::size_t>(r)] = 1;
-  std::vector<Bond> bonds = find_contacts(pat.points(), L, kBondTolerance, off_lattice);
-
-  auto& pts = pat.points();
-  pts[static_cast<std::size_t>(a0)] = c.a0;
-  pts[static_cast<std::size_t>(a2)] = c.a2;
-  pts[static_cast<std::size_t>(b0)] = c.b0;
-  pts[static_cast<std::size_t>(b1)] = c.b1;
-  // The bottom chain F0 R0 F1 F2 R1 F3 R2 ... R_{k-1} F_{k+1}, as in the depressed pattern.
-  std::vector<int> fl(static_cast<std::size_t>(k + 2)), ra(static_cast<std::size_t>(k));
-  std::vector<int> chain;
-  auto add_floor = [&](long i) {
-    fl[static_cast<std::size_t>(i)] = pat.add(c.floor[static_cast<std::size_t>(i)]);
-    chain.push_back(fl[static_cast<std::size_t>(i)]);
-  };
-  auto add_raised = [&](long i) {
-    ra[static_cast<std::size_t>(i)] = pat.add(c.raised[static_cast<std::size_t>(i)]);
-    chain.push_back(ra[static_cast<std::size_t>(i)]);
-  };
-  add_floor(0);
-  add_raised(0);
-  add_floor(1);
-  for (long i = 1; i < k; ++i) {
-    add_floor(i + 1);
-    add_raised(i);
-  }
-  add_floor(k + 1);
-
-  for (std::size_t i = 0; i + 1 < chain.size(); ++i)
-    bonds.push_back(Bond::pair(chain[i], chain[i + 1]));
-  for (int f : fl) bonds.push_back(Bond::wall(f, Side::Bottom));
-  bonds.push_back(Bond::wall(fl.front(), Side::Left));
-  bonds.push_back(Bond::wall(fl.back(), Side::Right));
+  f.keep_lattice_except({{a0, c.a0}, {a2, c.a2}, {b0, c.b0}, {b1, c.b1}}, rattlers);
+  f.add_chain(c.floor, c.raised);
   // The cage contacts (docs/odd-ripple-other.md).
-  const int r0 = ra[0], f2 = fl[2];
-  bonds.push_back(Bond::wall(a0, Side::Left));
+  const int r0 = f.raised_disk(0), f2 = f.floor_disk(2);
+  f.wall_bond(a0, Side::Left);
   const int cage[][2] = {
       {r0, a0}, {a0, b0},          {b0, s(m - 3, 0)},  // A0 slides up the left wall
       {b0, b1}, {b1, s(m - 2, 2)},                     // B0, B1 (row 2k-2)
       {b1, a2}, {a2, a3},          {a2, f2}};          // A2 sits on the floor disk F2
-  for (const auto& e : cage) bonds.push_back(Bond::pair(e[0], e[1]));
-  for (long i = 1; i < k; ++i)
-    bonds.push_back(Bond::pair(ra[static_cast<std::size_t>(i)], s(m - 1, 2 * i + 1)));
+  for (const auto& e : cage) f.bond(e[0], e[1]);
+  for (long i = 1; i < k; ++i) f.bond(f.raised_disk(i), s(m - 1, 2 * i + 1));
   // k = 2: R1 also touches A2 (F2 R1 A3 A2 is a rhombus with the unit diagonal A2 R1; the
   // geometry forces it, it is not an equation of the solve).
-  if (k == 2) bonds.push_back(Bond::pair(ra[1], a2));
-  std::sort(bonds.begin(), bonds.end());
-
-  PolishOptions opt;
-  opt.tolerance = 1e-17L;
-  const PolishReport rep = polish_bond_system_disk_units(pts, L, bonds, rattlers, opt);
-  if (!(rep.max_residual < 1e-13L))
-    throw std::runtime_error("odd ripple (other): contact system not solved (residual " +
-                             std::to_string(static_cast<double>(rep.max_residual)) + ")");
-  pat.set_side(L);
-  // Rattlers start a little below their sites, inside the cages the ripple opens.
-  for (int r : rattlers) {
-    pts[static_cast<std::size_t>(r)] -= Vec2L{0, 0.25L};
-    pat.mark_rattler(r);
-  }
-  Pattern out = pat.finish({});
-  if (out.bonds != bonds)
-    throw std::logic_error(
-        "odd ripple (other): detected contacts differ from the intended ones for k=" +
-        std::to_string(k));
-  return out;
+  if (k == 2) f.bond(f.raised_disk(1), a2);
+  return f.finish(rattlers, 0.25L, "odd ripple (other)");
 }
 
 }  // namespace tripack
