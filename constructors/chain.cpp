@@ -8,10 +8,7 @@
 
 namespace tripack {
 
-namespace {
-
-// Intersection of the unit circles about c1 and c2 on the left of the direction c1 -> c2.
-std::optional<Vec2L> left_intersection(const Vec2L& c1, const Vec2L& c2) {
+std::optional<Vec2L> unit_circles_left(const Vec2L& c1, const Vec2L& c2) {
   const Vec2L dv = c2 - c1;
   const long double dist = norm(dv);
   if (!(dist < 2) || dist == 0) return std::nullopt;
@@ -19,6 +16,8 @@ std::optional<Vec2L> left_intersection(const Vec2L& c1, const Vec2L& c2) {
   const Vec2L u = dv / dist;
   return (c1 + c2) / 2.0L + Vec2L(-u.y, u.x) * h;
 }
+
+namespace {
 
 // March from the symmetry axis to the left corner for a given X. Fills chain.floor / raised for
 // indices on the left half (and the axis). Returns F_0.x, which must vanish, or nullopt if X is
@@ -42,7 +41,7 @@ std::optional<long double> march_left(RippleChain& c, long double X) {
   }
   for (; i >= 0; --i) {
     // R_i touches F_{i+1} and A_i; it lies below-left of the segment F_{i+1} -> A_i.
-    auto r = left_intersection(c.floor[static_cast<std::size_t>(i + 1)], c.anchor(i));
+    auto r = unit_circles_left(c.floor[static_cast<std::size_t>(i + 1)], c.anchor(i));
     if (!r || !(r->y < 1) || r->y <= 0) return std::nullopt;
     c.raised[static_cast<std::size_t>(i)] = *r;
     c.floor[static_cast<std::size_t>(i)] = {r->x - std::sqrt((1 - r->y) * (1 + r->y)), 0};

@@ -9,6 +9,7 @@
 // super-exponentially (1 - Y_12 ~ 1e-31) and a march from the corner loses every digit.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/geometry.hpp"
@@ -24,6 +25,11 @@ struct RippleChain {
   std::vector<Vec2L> raised;  // R_0..R_{q-1}
   Vec2L anchor(int i) const { return {X + static_cast<long double>(step * i), kSqrt3 * X}; }
 };
+
+// The intersection of the unit circles about c1 and c2 on the left of the direction c1 -> c2 (the
+// right one is unit_circles_left(c2, c1)), or nullopt if they do not meet. The builders' marches
+// place each disk this way.
+std::optional<Vec2L> unit_circles_left(const Vec2L& c1, const Vec2L& c2);
 
 // Solves the chain for q >= 1 and step 1 or 2. Throws std::runtime_error if no root is found.
 RippleChain solve_ripple_chain(int q, int step);

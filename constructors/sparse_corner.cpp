@@ -35,6 +35,7 @@
 
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
+#include "constructors/chain.hpp"
 #include "polish/polish.hpp"
 
 namespace tripack {
@@ -66,16 +67,6 @@ Vec2L corner_site(long K, long i, long j) {
   return {static_cast<long double>(j) + up / 2, up * kSqrt3 / 2};
 }
 
-// The intersection of the unit circles about c1 and c2 on the right of the direction c1 -> c2.
-std::optional<Vec2L> right_intersection(const Vec2L& c1, const Vec2L& c2) {
-  const Vec2L dv = c2 - c1;
-  const long double dist = norm(dv);
-  if (!(dist < 2) || dist == 0) return std::nullopt;
-  const long double hh = std::sqrt((1 - dist / 2) * (1 + dist / 2));
-  const Vec2L u = dv / dist;
-  return (c1 + c2) / 2.0L + Vec2L(u.y, -u.x) * hh;
-}
-
 // Everything for a given tau; returns F_m.x - L, or nullopt if the chain cannot be built.
 std::optional<long double> march(Corner& c, long double tau) {
   c.tau = tau;
@@ -97,7 +88,7 @@ std::optional<long double> march(Corner& c, long double tau) {
   }
   for (long i = 0; i < c.m; ++i) {
     const auto u = static_cast<std::size_t>(i);
-    const auto r = right_intersection(c.floor[u], apex_site(c.L, c.K - 2, c.h + i) + c.uR);
+    const auto r = unit_circles_left(apex_site(c.L, c.K - 2, c.h + i) + c.uR, c.floor[u]);
     if (!r || !(r->y > 0 && r->y < 1)) return std::nullopt;
     c.raised[u] = *r;
     c.floor[u + 1] = {r->x + std::sqrt((1 - r->y) * (1 + r->y)), 0};
