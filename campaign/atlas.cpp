@@ -46,7 +46,7 @@ struct Candidate {
 };
 
 // What one value of n gives: its candidates, the builders' own verdicts, errors.
-struct NOutcome {
+struct CandidatesOfN {
   std::vector<Candidate> candidates;
   std::vector<AtlasBuilderCheck> builders;
   std::vector<std::string> errors;
@@ -90,10 +90,10 @@ Candidate analysed(const Pattern& start, int digits) {
   return c;
 }
 
-NOutcome candidates_of(const Catalogue& catalogue, long long n,
+CandidatesOfN candidates_of(const Catalogue& catalogue, long long n,
                        const std::vector<RankedPacking>& stored,
                        const std::vector<BuildRequest>& members, int digits) {
-  NOutcome out;
+  CandidatesOfN out;
   for (const auto& r : stored) {
     const auto& p = r.packing;
     try {
@@ -282,7 +282,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     if (n >= first) members[n].push_back(m);
   }
 
-  std::map<long long, NOutcome> outcomes;
+  std::map<long long, CandidatesOfN> outcomes;
   std::mutex lock;
   std::size_t next = 0;
   long long done = 0;
@@ -294,7 +294,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
         if (next >= todo.size() || (cancel && *cancel)) return;
         n = todo[next++];
       }
-      NOutcome outcome = candidates_of(catalogue, n, stored[n], members[n], settings.digits);
+      CandidatesOfN outcome = candidates_of(catalogue, n, stored[n], members[n], settings.digits);
       std::lock_guard<std::mutex> guard(lock);
       outcomes[n] = std::move(outcome);
       ++done;
