@@ -256,11 +256,11 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
   };
 
   // Values of n on threads, largest first (the slowest start early), results by n.
-  std::vector<long long> todo;
+  std::vector<long long> pending;
   for (long long n = last; n >= first; --n)
     if (settings.n_values.empty() ||
         std::find(settings.n_values.begin(), settings.n_values.end(), n) != settings.n_values.end())
-      todo.push_back(n);
+      pending.push_back(n);
 
   // Everything read from the database first (one connection, one thread): the best few stored
   // packings of each n. Builders may add packings above them, so a few more than kept.
@@ -270,7 +270,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     options.create = false;
     options.allow_read_only = true;
     const store::ResultsDb db = store::ResultsDb::open(db_path, options);
-    for (long long n : todo) {
+    for (long long n : pending) {
       auto ranked = ranked_packings(db, n);
       if (ranked.size() > keep_of(n) + 4) ranked.resize(keep_of(n) + 4);
       stored[n] = std::move(ranked);
@@ -291,21 +291,21 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
       long long n = 0;
       {
         std::lock_guard<std::mutex> guard(lock);
-        if (next >= todo.size() || (cancel && *cancel)) return;
-        n = todo[next++];
+        if (next >= pending.size() || (cancel && *cancel)) return;
+        n = pending[next++];
       }
       CandidatesOfN outcome = candidates_of(catalogue, n, stored[n], members[n], settings.digits);
       std::lock_guard<std::mutex> guard(lock);
       outcomes[n] = std::move(outcome);
       ++done;
-      if (progress) progress({n, done, static_cast<long long>(todo.size()), seconds_since(start)});
+      if (progress) progress({n, done, static_cast<long long>(pending.size()), seconds_since(start)});
     }
   };
   std::vector<std::thread> pool;
   for (int t = 1; t < std::max(1, settings.threads); ++t) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
-  result.interrupted = static_cast<std::size_t>(done) < todo.size();
+  result.interrupted = static_cast<std::size_t>(done) < pending.size();
 
   for (auto& [n, outcome] : outcomes) {
     result.errors.insert(result.errors.end(), outcome.errors.begin(), outcome.errors.end());
