@@ -91,8 +91,8 @@ Candidate analysed(const Pattern& start, int digits) {
 }
 
 CandidatesOfN candidates_of(const Catalogue& catalogue, long long n,
-                       const std::vector<RankedPacking>& stored,
-                       const std::vector<BuildRequest>& members, int digits) {
+                            const std::vector<RankedPacking>& stored,
+                            const std::vector<BuildRequest>& members, int digits) {
   CandidatesOfN out;
   for (const auto& r : stored) {
     const auto& p = r.packing;
@@ -298,7 +298,8 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
       std::lock_guard<std::mutex> guard(lock);
       outcomes[n] = std::move(outcome);
       ++done;
-      if (progress) progress({n, done, static_cast<long long>(pending.size()), seconds_since(start)});
+      if (progress)
+        progress({n, done, static_cast<long long>(pending.size()), seconds_since(start)});
     }
   };
   std::vector<std::thread> pool;

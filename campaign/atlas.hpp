@@ -17,7 +17,7 @@ namespace tripack::campaign {
 
 struct AtlasSettings {
   long long n_first = 2, n_last = 200;  // every n of this range, or:
-  std::vector<long long> n_values;       // when not empty, these n only (in [n_first, n_last])
+  std::vector<long long> n_values;      // when not empty, these n only (in [n_first, n_last])
   // These n keep their best `ranked_count` distinct packings (the paper's rankings to check);
   // every other n keeps its best one.
   long long ranked_first = 16, ranked_last = 34;

@@ -12,10 +12,10 @@
 #include <string>
 
 #include "campaign/atlas.hpp"
+#include "campaign/atlas_files.hpp"
 #include "campaign/campaign.hpp"
 #include "constructors/registry.hpp"
 #include "pipeline/explore.hpp"
-#include "campaign/atlas_files.hpp"
 
 namespace tripack {
 namespace {
@@ -112,7 +112,8 @@ TEST(Atlas, AMalformedTableIsOneLineNamingTheFile) {
     campaign::read_atlas(dir / "atlas.csv");
     FAIL() << "no error";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("atlas.csv:1: not a tripack atlas table"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("atlas.csv:1: not a tripack atlas table"),
+              std::string::npos)
         << e.what();
   }
 }
