@@ -82,8 +82,12 @@ void record_runs(benchmark::State& s, bool new_packing) {
                                 static_cast<double>(seed);
   for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
 }
-void BM_RecordRunKnownPacking(benchmark::State& s) { record_runs(s, false); }
-void BM_RecordRunNewPacking(benchmark::State& s) { record_runs(s, true); }
+void BM_RecordRunKnownPacking(benchmark::State& s) {
+  record_runs(s, false);
+}
+void BM_RecordRunNewPacking(benchmark::State& s) {
+  record_runs(s, true);
+}
 BENCHMARK(BM_RecordRunKnownPacking)->Arg(22)->Arg(100)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RecordRunNewPacking)->Arg(22)->Arg(100)->Unit(benchmark::kMicrosecond);
 

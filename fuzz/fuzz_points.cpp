@@ -21,10 +21,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const FileFormat format = formats[sel & 3];
   std::optional<Convention> convention;
   switch ((sel >> 2) & 3) {
-    case 1: convention = Convention::UnitTriangle; break;
-    case 2: convention = Convention::Radius; break;
-    case 3: convention = Convention::UnitDiskSide; break;
-    default: break;
+    case 1:
+      convention = Convention::UnitTriangle;
+      break;
+    case 2:
+      convention = Convention::Radius;
+      break;
+    case 3:
+      convention = Convention::UnitDiskSide;
+      break;
+    default:
+      break;
   }
   std::istringstream in(std::string(reinterpret_cast<const char*>(data + 1), size - 1));
   PointsFile file;

@@ -21,9 +21,9 @@
 
 namespace tripack::sim_detail {
 
-TRIPACK_PAIR_TIMES_CLONES void pair_times(
-    int m, const Disk* __restrict disks, const int* __restrict list, Vec2 xi, Vec2 vi, double now,
-    double D, double g, double* __restrict t) {
+TRIPACK_PAIR_TIMES_CLONES void pair_times(int m, const Disk* __restrict disks,
+                                          const int* __restrict list, Vec2 xi, Vec2 vi, double now,
+                                          double D, double g, double* __restrict t) {
   for (int k = 0; k < m; ++k) {
     const Disk& dj = disks[list[k]];
     const double px = dj.x0.x + dj.v.x * now - xi.x;

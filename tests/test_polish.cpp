@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "polish/polish.hpp"
 #include "constructors/builders.hpp"
+#include "polish/polish.hpp"
 
 namespace tripack {
 namespace {
