@@ -31,7 +31,7 @@
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/compare.hpp"
 #include "pipeline/explore.hpp"
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
 #include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
@@ -140,7 +140,7 @@ class StageProgressLine {
   void tick() {
     std::unique_lock<std::mutex> lock(mutex_);
     while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stopped_; })) {
-      const double now = pipeline::seconds_since(start_);
+      const double now = seconds_since(start_);
       if (now < 2) continue;
       std::string line = fmt::format("\r{}: {:.1f} s, {}", what_, now, latest_.stage);
       if (latest_.step > 0) line += fmt::format(" step {}", latest_.step);
@@ -152,7 +152,7 @@ class StageProgressLine {
     }
   }
   std::string what_;
-  pipeline::Clock::time_point start_ = pipeline::Clock::now();
+  Clock::time_point start_ = Clock::now();
   std::mutex mutex_;
   std::condition_variable wake_;
   pipeline::AnalysisProgress latest_;
@@ -310,10 +310,7 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   print_result(result, o.out);
   if (!result.packings.empty()) {
     const auto& best = result.packings.front();
-    std::vector<long double> forces;
-    for (const auto& run : result.runs)
-      if (run.seed == best.first_seed) forces = forces_of(run.analysis);
-    draw_if_asked(o.diagrams, best.pattern, best.label, forces);
+    draw_if_asked(o.diagrams, best.pattern, best.label, best.forces);
   }
   return 0;
 }
@@ -381,12 +378,12 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   std::optional<report::ExploreAtlas> atlas;
   const std::filesystem::path atlas_csv = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
   if (o.atlas != "none" && (!o.atlas.empty() || std::filesystem::exists(atlas_csv))) {
-    auto entries = campaign::read_atlas(atlas_csv);
+    auto rows = campaign::read_atlas(atlas_csv);
     std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
-                             atlas_csv.string(), entries.size());
+                             atlas_csv.string(), rows.size());
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
     atlas =
-        report::ExploreAtlas{atlas_csv, std::move(entries), campaign::load_atlas(atlas_csv, 1),
+        report::ExploreAtlas{atlas_csv, std::move(rows), campaign::load_atlas(atlas_csv, 1),
                              std::filesystem::exists(gaps_csv) ? campaign::read_atlas_gaps(gaps_csv)
                                                                : std::vector<campaign::AtlasGap>{}};
   }
@@ -613,11 +610,11 @@ int cmd_db_export(const DbExportOptions& o) {
   }
   const FileFormat chosen = format.value_or(FileFormat::Text);
   const auto selected = campaign::select_packings(o.db, o.n, o.rank, o.all);
-  auto write_options = [&](const campaign::RankedPacking& r) {
+  auto write_options = [&](const PackingRecord& r) {
     WriteOptions w;
     w.convention = convention;
     w.digits = o.digits;
-    w.d_digits = std::min(o.digits, 18);  // d is stored with 18 significant digits
+    w.d_digits = std::min(o.digits, kLongDoubleDigits);  // the digits the database keeps of d
     w.label = r.label;
     return w;
   };
@@ -628,7 +625,7 @@ int cmd_db_export(const DbExportOptions& o) {
     if (array) buffer << "[\n";
     for (std::size_t i = 0; i < selected.size(); ++i) {
       if (i > 0) buffer << (array ? ",\n" : "\n");
-      report::write_packing(buffer, campaign::pattern_of(selected[i].packing), chosen,
+      report::write_packing(buffer, selected[i].pattern, chosen,
                             write_options(selected[i]));
     }
     if (array) buffer << "]\n";
@@ -641,7 +638,7 @@ int cmd_db_export(const DbExportOptions& o) {
                                            ? dir / (r.label + report::file_extension(chosen))
                                            : std::filesystem::path(o.output);
     std::ostringstream bytes;
-    report::write_packing(bytes, campaign::pattern_of(r.packing), chosen, write_options(r));
+    report::write_packing(bytes, r.pattern, chosen, write_options(r));
     report::write_file(path, bytes.str());
     std::cout << path.string() << "\n";
   }

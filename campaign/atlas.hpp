@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "constructors/catalogue.hpp"
-#include "core/packing.hpp"
+#include "core/record.hpp"
 
 namespace tripack::campaign {
 
@@ -26,25 +26,12 @@ struct AtlasSettings {
   int threads = 2;
 };
 
-// One row of data/atlas.csv.
-struct AtlasRow {
-  long long n = 0;
-  std::size_t rank = 0;  // 1 = the best here
-  std::string label;     // t29a, t17a40, t31a81.1, ... (SPEC §9) among the atlas rows of n
-  std::string d, L,
-      delta;        // MPFR: d and L with `digits` significant digits, delta with L's decimals
-  Pattern pattern;  // long double, bonds and rattlers from the geometry
-  // The coordinates to `digits` digits (unit triangle; rattlers keep their long double place).
-  std::vector<std::array<std::string, 2>> points;
-  bool certified = false;
-  std::string verdict;
-  // Where it comes from: "builder CLASS k=.. [p=..] [variant=..]" (every builder giving it),
-  // and/or "billiards seed S (R runs)" or "import FILE" from the database.
-  std::string source;
-  std::vector<std::string> builders;  // the builder members giving this packing (member_name)
-  long long runs = 0;                 // campaign runs that ended in it (0: none)
-  std::string file;                   // the coordinates, relative to the data directory
-};
+// The atlas's rows are packing records (core/record.hpp): d and L to `digits` (MPFR), the
+// coordinates to `digits` in precise_points (rattlers keep their long double place), every source
+// (the builders giving it, the billiards seed or import of the database), label and rank among
+// the certified packings of n, and `file` (atlas/LABEL.txt, relative to the data directory).
+// delta (the L - t(n) column) is derived from L with atlas_delta.
+std::string atlas_delta(const PackingRecord& row);
 
 // A builder member of n, whether or not it made the atlas (findings compare it with the best).
 struct AtlasBuilderCheck {
@@ -79,7 +66,7 @@ struct AtlasProgress {
 struct AtlasResult {
   AtlasSettings settings;
   std::string db;
-  std::vector<AtlasRow> rows;  // by n, then rank
+  std::vector<PackingRecord> rows;  // by n, then rank
   std::vector<AtlasBuilderCheck> builders;
   std::vector<AtlasGap> gaps;       // by class, then p, then k
   std::vector<long long> missing;   // n in the range without any certified packing

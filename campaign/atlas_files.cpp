@@ -38,17 +38,17 @@ std::string csv_line(const std::vector<std::string>& fields) {
   return line + "\n";
 }
 
-std::vector<std::string> fields_of(const AtlasRow& r) {
-  return {std::to_string(r.n),
+std::vector<std::string> fields_of(const PackingRecord& r) {
+  return {std::to_string(r.n()),
           std::to_string(r.rank),
           r.label,
-          r.d,
-          r.L,
-          r.delta,
+          r.d.str(),
+          r.L.str(),
+          atlas_delta(r),
           std::to_string(r.pattern.bonds.size()),
           std::to_string(r.pattern.rattlers.size()),
           r.certified ? "true" : "false",
-          r.source,
+          r.source_text(),
           r.file};
 }
 
@@ -95,11 +95,11 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   for (const auto& row : atlas.rows) {
     WriteOptions options;
     options.label = row.label;
-    options.exact_d = row.d;
-    options.exact_points = &row.points;
+    options.exact_d = row.d.str();
+    options.exact_points = &row.precise_points;
     options.comments = {
-        "rank: " + std::to_string(row.rank), "L: " + row.L, "delta: " + row.delta,
-        "source: " + row.source,
+        "rank: " + std::to_string(row.rank), "L: " + row.L.str(), "delta: " + atlas_delta(row),
+        "source: " + row.source_text(),
         std::string("certified: ") + (row.certified ? "yes" : "no") + " (" + row.verdict + ")"};
     if (!row.pattern.rattlers.empty())
       options.comments.push_back(
@@ -116,8 +116,8 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   std::string gaps = csv_line(kGapColumns);
   for (const auto& g : atlas.gaps)
     gaps += csv_line({g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k),
-                      std::to_string(g.n), g.label_n, g.label_next, format_significant(g.L_n, 18),
-                      format_significant(g.L_next, 18), format_significant(g.L_next - g.L_n, 15),
+                      std::to_string(g.n), g.label_n, g.label_next, format_significant(g.L_n, kLongDoubleDigits),
+                      format_significant(g.L_next, kLongDoubleDigits), format_significant(g.L_next - g.L_n, 15),
                       format_significant(g.delta_difference, 15), g.claim_tight});
   write_whole(dir / "atlas-gaps.csv", gaps);
   write_whole(dir / "atlas.csv", atlas_table(atlas));
@@ -164,34 +164,41 @@ std::vector<std::vector<std::string>> read_table(const std::filesystem::path& cs
 
 }  // namespace
 
-std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv) {
-  std::vector<AtlasEntry> entries;
+std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
+  std::vector<PackingRecord> rows;
   long long number = 1;
   for (const auto& f : read_table(csv, kColumns, "atlas table")) {
     ++number;
-    AtlasEntry e;
+    long long n = 0;
+    PackingRecord row;
     try {
-      e.n = std::stoll(f[0]);
-      e.rank = std::stoll(f[1]);
-      e.bonds = std::stoll(f[6]);
-      e.rattlers = std::stoll(f[7]);
-      (void)std::stold(f[3]);
-      (void)std::stold(f[4]);
+      n = std::stoll(f[0]);
+      row.rank = static_cast<std::size_t>(std::stoll(f[1]));
+      (void)std::stoll(f[6]);
+      (void)std::stoll(f[7]);
+      const long double d = std::stold(f[3]);
+      row.d = PreciseReal(d, f[3], significant_digits(f[3]));
+      row.L = PreciseReal(std::stold(f[4]), f[4], significant_digits(f[4]));
       (void)std::stold(f[5]);
     } catch (const std::exception&) {
       throw std::runtime_error(
           fmt::format("{}:{}: a number field is not a number", csv.string(), number));
     }
-    e.label = f[2];
-    e.d = f[3];
-    e.L = f[4];
-    e.delta = f[5];
-    e.certified = f[8] == "true";
-    e.source = f[9];
-    e.file = f[10];
-    entries.push_back(std::move(e));
+    row.label = f[2];
+    row.certified = f[8] == "true";
+    row.sources.push_back({PackingSource::Kind::Table, f[9]});
+    row.file = f[10];
+    // The coordinates file gives the pattern (its points and d; bonds come with load_atlas).
+    const PointsFile points = read_points_file((csv.parent_path() / row.file).string());
+    if (static_cast<long long>(points.points.size()) != n)
+      throw std::runtime_error(fmt::format("{}:{}: {} has {} points, the row says n = {}",
+                                           csv.string(), number, row.file, points.points.size(),
+                                           n));
+    row.pattern.packing.points = points.points;
+    row.pattern.packing.d = row.d.value();
+    rows.push_back(std::move(row));
   }
-  return entries;
+  return rows;
 }
 
 std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
@@ -220,22 +227,23 @@ std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
   return gaps;
 }
 
-std::vector<AtlasPacking> load_atlas(const std::filesystem::path& csv, long long max_rank) {
-  std::vector<AtlasPacking> packings;
-  for (auto& entry : read_atlas(csv)) {
-    if (entry.rank > max_rank) continue;
+std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long long max_rank) {
+  std::vector<PackingRecord> rows;
+  for (auto& row : read_atlas(csv)) {
+    if (static_cast<long long>(row.rank) > max_rank) continue;
     pipeline::AnalyzeRequest request;
-    request.file = (csv.parent_path() / entry.file).string();
-    request.expected_n = entry.n;
-    const pipeline::FileAnalysis read = pipeline::analyze_file(request);
-    AtlasPacking p;
-    p.entry = std::move(entry);
-    p.pattern = read.analysis.pattern;
-    p.forces = read.analysis.stress.forces;
-    p.certified = read.analysis.certified();
-    packings.push_back(std::move(p));
+    request.file = (csv.parent_path() / row.file).string();
+    request.expected_n = row.n();
+    PackingRecord analysed = pipeline::record_of(pipeline::analyze_file(request).analysis);
+    analysed.d = row.d;  // the table's digits
+    analysed.L = row.L;
+    analysed.label = row.label;
+    analysed.rank = row.rank;
+    analysed.file = row.file;
+    analysed.sources = row.sources;
+    rows.push_back(std::move(analysed));
   }
-  return packings;
+  return rows;
 }
 
 }  // namespace tripack::campaign

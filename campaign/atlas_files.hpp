@@ -23,34 +23,16 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir);
 // atlas.csv's text: the header and a line per row (`tripack atlas --csv` prints the same).
 std::string atlas_table(const AtlasResult& atlas);
 
-// A row of atlas.csv as read back (strings as written).
-struct AtlasEntry {
-  long long n = 0;
-  long long rank = 0;
-  std::string label, d, L, delta;
-  long long bonds = 0, rattlers = 0;
-  bool certified = false;
-  std::string source, file;
-};
-
-// Reads DIR/atlas.csv; throws a one-line std::runtime_error naming the file and line when it is
-// missing or malformed.
-std::vector<AtlasEntry> read_atlas(const std::filesystem::path& csv);
+// DIR/atlas.csv read back: a record per row with its label, rank, d and L (the table's digits),
+// its coordinates (from its file), `file`, and the source column as a Table source; bonds are not in the files (load_atlas analyses them). Throws a one-line
+// std::runtime_error naming the file and line when the table or a file is missing or malformed.
+std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv);
 
 // DIR/atlas-gaps.csv read back (the tight/loose table); same errors as read_atlas.
 std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv);
 
-// A row with its packing: the file read back and analysed (the files keep no bonds), so it can
-// be drawn with its bonds, rattlers and forces.
-struct AtlasPacking {
-  AtlasEntry entry;
-  Pattern pattern;
-  std::vector<long double> forces;  // the stress certificate's, per bond
-  bool certified = false;           // certified again from the file
-};
-
-// The rows of atlas.csv with rank <= max_rank, each file read and analysed. Throws a one-line
-// error for a missing or malformed table or file.
-std::vector<AtlasPacking> load_atlas(const std::filesystem::path& csv, long long max_rank);
+// The rows with rank <= max_rank, each file analysed again (bonds, rattlers, forces, the
+// certificate from the file alone), with the table's label, rank, d and L. Same errors.
+std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long long max_rank);
 
 }  // namespace tripack::campaign

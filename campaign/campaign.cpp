@@ -15,6 +15,7 @@
 #include "campaign/ranks.hpp"
 #include "campaign/work_unit.hpp"
 #include "core/io.hpp"
+#include "core/timing.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 
@@ -39,18 +40,9 @@ store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit) 
     record.seconds = sim.seconds + analysis.times.total();
     record.outcome = analysis.certified() ? "certified" : "not certified: " + analysis.status();
     if (analysis.certified()) {
-      const Pattern& p = analysis.pattern;
-      store::StoredPacking packing;
-      packing.n = unit.n;
-      packing.d = format_significant(p.packing.d, 18);
-      packing.graph_hash = contact_graph_hash(p);
-      packing.points = p.packing.points;
-      packing.bonds = p.bonds;
-      packing.rattlers = p.rattlers;
-      packing.certified = true;
-      packing.first_seed = unit.seed;
-      packing.tool_version = request.tool_version;
-      record.packing = std::move(packing);
+      PackingRecord found = pipeline::record_of(analysis);
+      found.sources.push_back({PackingSource::Kind::Billiards, "", unit.seed, 1});
+      record.packing = store::stored_of(found, request.tool_version);
     }
   } catch (const std::exception& e) {
     record.outcome = std::string("error: ") + e.what();
@@ -70,7 +62,7 @@ void check(const CampaignRequest& request, int ranks) {
     throw std::invalid_argument("a campaign scene cannot have initial points (n varies)");
 }
 
-using Clock = std::chrono::steady_clock;
+
 
 // The one writer's bookkeeping: the units still to run, the database, the counts. Units are
 // handed out and recorded under one mutex (threads of this process and, through rank 0's main

@@ -1,5 +1,7 @@
 #include "campaign/import.hpp"
 
+#include "core/timing.hpp"
+
 #include <fmt/format.h>
 
 #include <chrono>
@@ -16,14 +18,11 @@ namespace tripack::campaign {
 
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // One file read, checked and analysed; `stored` is what goes into the database.
 ImportedPacking analyse_file(const ImportRequest& request, const std::string& path,
                              store::StoredPacking& stored) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   ImportedPacking out;
   out.file = path;
   out.source = std::filesystem::path(path).filename().string();
@@ -43,36 +42,25 @@ ImportedPacking analyse_file(const ImportRequest& request, const std::string& pa
   out.warnings = reading.warnings;
   const Packing& start_packing = reading.packing;
   out.n = static_cast<long long>(start_packing.size());
-  out.d_file = format_significant(start_packing.d, 18);
+  out.d_file = format_significant(start_packing.d, kLongDoubleDigits);
   if (reading.stated_d && *reading.stated_d > start_packing.d * (1 + kOverlapTolerance))
     throw ImportError(fmt::format(
         "{}: overlapping disks: the file states d = {} but its closest centres are {} apart "
         "(the disks overlap by {:.3g} of d); refused, nothing stored",
-        path, format_significant(*reading.stated_d, 18), out.d_file,
+        path, format_significant(*reading.stated_d, kLongDoubleDigits), out.d_file,
         static_cast<double>(1 - start_packing.d / *reading.stated_d)));
   const pipeline::Analysis analysis = pipeline::analyze_packing(start_packing, {});
   out.verdict = analysis.status();
   if (!analysis.certified())
     throw ImportError(
         fmt::format("{}: not certified ({}); refused, nothing stored", path, out.verdict));
-  const Pattern& p = analysis.pattern;
-  out.d = format_significant(p.packing.d, 18);
-  out.graph_hash = contact_graph_hash(p);
-  out.bonds = p.bonds.size();
-  out.rattlers = p.rattlers;
-  stored = {};
-  stored.n = out.n;
-  stored.d = out.d;
-  stored.graph_hash = out.graph_hash;
-  stored.points = p.packing.points;
-  stored.bonds = p.bonds;
-  stored.rattlers = p.rattlers;
-  stored.certified = true;
-  stored.has_seed = false;
-  stored.runs = 0;
-  stored.origin = "import";
-  stored.source = out.source;
-  stored.tool_version = request.tool_version;
+  PackingRecord record = pipeline::record_of(analysis);
+  record.sources.push_back({PackingSource::Kind::Import, out.source});
+  out.d = record.d.str(kLongDoubleDigits);
+  out.graph_hash = record.graph_hash;
+  out.bonds = record.bonds();
+  out.rattlers = record.pattern.rattlers;
+  stored = store::stored_of(record, request.tool_version);
   out.seconds = seconds_since(start);
   return out;
 }
@@ -80,7 +68,7 @@ ImportedPacking analyse_file(const ImportRequest& request, const std::string& pa
 }  // namespace
 
 ImportResult import_packings(const ImportRequest& request) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   if (request.files.empty()) throw ImportError("db import needs at least one file");
   ImportResult result;
   result.db = request.db;
@@ -101,8 +89,10 @@ ImportResult import_packings(const ImportRequest& request) {
     x.added = outcomes[i].added;
     x.id = outcomes[i].id;
     (x.added ? result.added : result.already) += 1;
-    for (const auto& ranked : ranked_packings(db, x.n))
-      if (ranked.packing.id == x.id) x.label = ranked.label;
+    std::vector<long long> ids;
+    const auto ranked = ranked_packings(db, x.n, &ids);
+    for (std::size_t r = 0; r < ranked.size(); ++r)
+      if (ids[r] == x.id) x.label = ranked[r].label;
   }
   result.seconds = seconds_since(start);
   return result;

@@ -7,7 +7,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "pipeline/billiards_search.hpp"
+#include "core/ranking.hpp"
+#include "core/timing.hpp"
 
 namespace tripack::campaign {
 
@@ -20,41 +21,23 @@ store::OpenOptions for_reading() {
   return options;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
-std::vector<RankedPacking> ranked_packings(const store::ResultsDb& db, long long n) {
-  std::vector<store::StoredPacking> stored = db.packings(n);
-  std::vector<pipeline::RankKey> keys;
-  std::vector<std::uint64_t> seeds;
-  for (const auto& p : stored) {
-    keys.push_back({std::stold(p.d), p.bonds.size()});
-    seeds.push_back(p.has_seed ? p.first_seed : std::numeric_limits<std::uint64_t>::max());
+std::vector<PackingRecord> ranked_packings(const store::ResultsDb& db, long long n,
+                                           std::vector<long long>* ids) {
+  const std::vector<store::StoredPacking> stored = db.packings(n);
+  std::vector<PackingRecord> records;
+  for (const auto& p : stored) records.push_back(store::record_of(p));
+  const auto order = rank_records(n, records);
+  if (ids) {
+    ids->clear();
+    for (std::size_t i : order) ids->push_back(stored[i].id);
   }
-  const auto order = pipeline::label_order(keys, seeds);
-  std::vector<pipeline::RankKey> sorted;
-  for (std::size_t i : order) sorted.push_back(keys[i]);
-  const auto labels = pipeline::paper_labels(n, sorted);
-  std::vector<RankedPacking> ranked;
-  for (std::size_t r = 0; r < order.size(); ++r)
-    ranked.push_back({std::move(stored[order[r]]), labels[r], r + 1});
-  return ranked;
-}
-
-Pattern pattern_of(const store::StoredPacking& packing) {
-  Pattern pattern;
-  pattern.packing.points = packing.points;
-  pattern.packing.d = std::stold(packing.d);
-  pattern.bonds = packing.bonds;
-  pattern.rattlers = packing.rattlers;
-  return pattern;
+  return records;
 }
 
 BestTable best_table(const store::ResultsDb& db, long long n_first, long long n_last) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   BestTable table;
   table.db = db.path();
   for (const auto& best : db.best_per_n())
@@ -65,14 +48,14 @@ BestTable best_table(const store::ResultsDb& db, long long n_first, long long n_
 }
 
 BestTable best_table(const std::string& path, long long n_first, long long n_last) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   BestTable table = best_table(store::ResultsDb::open(path, for_reading()), n_first, n_last);
   table.seconds = seconds_since(start);
   return table;
 }
 
 DbCheck check_database(const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   DbCheck check;
   check.db = path;
   check.stats = store::ResultsDb::open(path, for_reading()).statistics();
@@ -80,10 +63,10 @@ DbCheck check_database(const std::string& path) {
   return check;
 }
 
-std::vector<RankedPacking> select_packings(const std::string& path, long long n, long long rank,
+std::vector<PackingRecord> select_packings(const std::string& path, long long n, long long rank,
                                            bool all) {
   const store::ResultsDb db = store::ResultsDb::open(path, for_reading());
-  std::vector<RankedPacking> ranked = ranked_packings(db, n);
+  std::vector<PackingRecord> ranked = ranked_packings(db, n);
   if (ranked.empty())
     throw std::invalid_argument(fmt::format("no packings of n = {} in {}", n, path));
   if (all) return ranked;
@@ -112,7 +95,7 @@ std::uintmax_t file_bytes(const std::string& path) {
 PruneResult prune_database(const std::string& path, long long keep, long long n_first,
                            long long n_last) {
   if (keep < 1) throw std::invalid_argument("--keep must be at least 1");
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   PruneResult result;
   result.db = path;
   result.keep = keep;
@@ -124,12 +107,13 @@ PruneResult prune_database(const std::string& path, long long keep, long long n_
   for (const auto& best : db.best_per_n()) {
     if (best.n < n_first || best.n > n_last) continue;
     ++result.n_values;
-    const auto ranked = ranked_packings(db, best.n);
-    for (const auto& r : ranked) {
-      if (static_cast<long long>(r.rank) <= keep)
+    std::vector<long long> ids;
+    const auto ranked = ranked_packings(db, best.n, &ids);
+    for (std::size_t r = 0; r < ranked.size(); ++r) {
+      if (static_cast<long long>(ranked[r].rank) <= keep)
         ++result.kept;
       else
-        doomed.push_back(r.packing.id);
+        doomed.push_back(ids[r]);
     }
   }
   result.removed = static_cast<long long>(doomed.size());

@@ -9,29 +9,21 @@
 #include <string>
 #include <vector>
 
-#include "core/packing.hpp"
+#include "core/record.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::campaign {
 
-// One stored packing with its place among the packings of its n.
-struct RankedPacking {
-  store::StoredPacking packing;
-  std::string label;     // t22a, t17a40, t31a81.1, ... (SPEC §9)
-  std::size_t rank = 0;  // 1-based position, best first (`db export --rank`)
-};
-
-// Every stored packing of n, best first: d decreasing; d agreeing to 1e-12 by more bonds, then
-// by first seed (imports without a seed after), as `tripack billiards` orders its packings.
-std::vector<RankedPacking> ranked_packings(const store::ResultsDb& db, long long n);
-
-// The packing as a Pattern (points, d from the stored 18-digit text, bonds, rattlers).
-Pattern pattern_of(const store::StoredPacking& packing);
+// Every stored packing of n as a record (store::record_of), ranked and labelled by
+// core/ranking.hpp like every other list of packings (imports without a seed after the runs'
+// packings where d ties). `ids`, when given, receives each one's database row in the same order.
+std::vector<PackingRecord> ranked_packings(const store::ResultsDb& db, long long n,
+                                           std::vector<long long>* ids = nullptr);
 
 // `tripack db best`: the best packing of every n in [n_first, n_last] that has one.
 struct BestTable {
   std::string db;
-  std::vector<RankedPacking> rows;  // by n
+  std::vector<PackingRecord> rows;  // by n
   double seconds = 0;
 };
 BestTable best_table(const store::ResultsDb& db, long long n_first, long long n_last);
@@ -52,7 +44,7 @@ DbCheck check_database(const std::string& path);
 // `tripack db export`: the packings of n asked for: rank `rank` (1 = the best), or all of them.
 // Throws std::invalid_argument (one line) when n has no stored packing or the rank is not one;
 // store::StoreError when there is no database.
-std::vector<RankedPacking> select_packings(const std::string& path, long long n, long long rank,
+std::vector<PackingRecord> select_packings(const std::string& path, long long n, long long rank,
                                            bool all);
 
 // `tripack db prune`: keeps the best `keep` stored packings of every n in [n_first, n_last]

@@ -27,10 +27,6 @@ FileFormat format_from_path(const std::string& path) {
   return FileFormat::Text;
 }
 
-std::string format_significant(long double value, int digits) {
-  return fmt::format("{:.{}Lg}", value, digits);
-}
-
 namespace {
 
 // What the header of a file in convention c says about its container and circles.

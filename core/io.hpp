@@ -13,6 +13,7 @@
 
 #include "core/conventions.hpp"
 #include "core/packing.hpp"
+#include "core/precision.hpp"
 
 namespace tripack {
 
@@ -125,8 +126,5 @@ inline std::string csv_field(const std::string& field) {
   for (char c : field) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
 }
-
-// Decimal string of a long double with `digits` significant digits.
-std::string format_significant(long double value, int digits);
 
 }  // namespace tripack

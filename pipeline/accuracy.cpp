@@ -19,7 +19,7 @@
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"
 #include "pipeline/build.hpp"
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
 #include "polish/polish_mp.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"

@@ -9,7 +9,8 @@
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 #include "core/points.hpp"
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
+#include "analysis/compare.hpp"
 
 namespace tripack::pipeline {
 
@@ -38,9 +39,24 @@ std::string Analysis::status() const {
   return "certified: rigid with a strictly positive stress (strict local optimum of d)";
 }
 
-std::string Analysis::d_string(int digits) const {
-  if (multiprecision && multiprecision->converged) return multiprecision->d;
-  return format_significant(pattern.packing.d, std::min(digits, 18));
+std::string Analysis::d_string(int digits) const { return record_of(*this).d.str(digits); }
+
+void apply_multiprecision(PackingRecord& record, const MultiprecisionPolish& polish) {
+  if (!polish.converged) return;
+  record.d = PreciseReal(record.pattern.packing.d, polish.d, polish.digits);
+  record.L = PreciseReal(1 / record.pattern.packing.d, polish.L, polish.digits);
+  record.precise_points = polish.points;
+}
+
+PackingRecord record_of(const Analysis& analysis) {
+  PackingRecord record = PackingRecord::of(analysis.pattern);
+  if (analysis.multiprecision) apply_multiprecision(record, *analysis.multiprecision);
+  record.certified = analysis.certified();
+  record.verdict = analysis.status();
+  record.forces = analysis.stress.forces;
+  record.seconds = analysis.times.total();
+  identify(record);
+  return record;
 }
 
 namespace {
@@ -215,8 +231,8 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
   }
   Packing& pk = a.pattern.packing;
   a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
-  if (options.digits > 18) tell(progress, "multiprecision polish", 0, pk.d);
-  if (options.digits > 18)
+  if (options.digits > kLongDoubleDigits) tell(progress, "multiprecision polish", 0, pk.d);
+  if (options.digits > kLongDoubleDigits)
     a.multiprecision = timed(a.times.multiprecision, [&] {
       return polish_multiprecision(pk, a.pattern.bonds, a.pattern.rattlers, options.digits);
     });
@@ -227,26 +243,26 @@ namespace {
 
 const MultiprecisionPolish* high_digits(const Analysis& a, int wanted) {
   const auto& mp = a.multiprecision;
-  return wanted > 18 && mp && mp->converged ? &*mp : nullptr;
+  return wanted > kLongDoubleDigits && mp && mp->converged ? &*mp : nullptr;
 }
 
 }  // namespace
 
 std::string FileAnalysis::d_string(int wanted) const {
   if (const auto* mp = high_digits(analysis, wanted)) return mp->d;
-  return format_significant(analysis.pattern.packing.d, std::min(wanted, 18));
+  return format_significant(analysis.pattern.packing.d, std::min(wanted, kLongDoubleDigits));
 }
 
 std::string FileAnalysis::L_string(int wanted) const {
   if (const auto* mp = high_digits(analysis, wanted)) return mp->L;
-  return format_significant(1 / analysis.pattern.packing.d, std::min(wanted, 18));
+  return format_significant(1 / analysis.pattern.packing.d, std::min(wanted, kLongDoubleDigits));
 }
 
 std::string FileAnalysis::value_string(int wanted) const {
   if (convention == Convention::UnitTriangle) return d_string(wanted);
   if (high_digits(analysis, wanted) && !mp_value_in_convention.empty())
     return mp_value_in_convention;
-  return format_significant(from_d(analysis.pattern.packing.d, convention), std::min(wanted, 18));
+  return format_significant(from_d(analysis.pattern.packing.d, convention), std::min(wanted, kLongDoubleDigits));
 }
 
 FileAnalysis analyze_file(const AnalyzeRequest& request) {

@@ -14,6 +14,7 @@
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
 #include "core/packing.hpp"
+#include "core/record.hpp"
 #include "polish/polish_mp.hpp"
 
 namespace tripack::pipeline {
@@ -36,7 +37,7 @@ struct AnalysisProgress {
 using AnalysisProgressFn = std::function<void(const AnalysisProgress&)>;
 
 struct AnalysisOptions {
-  int digits = 15;  // > 18: polish in MPFR to this many digits
+  int digits = 15;  // > kLongDoubleDigits: polish in MPFR to this many digits
   // From this many disks, a start that does not certify as it is is first moved by the
   // interior-point relax; the LP relax runs (from the start) only if that result does not
   // certify either. Below it the LP relax is fast (n = 254: 0.1 s) and decides alone.
@@ -74,6 +75,12 @@ struct Analysis {
 
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options);
 
+// The analysis as a packing record: the pattern, d and L with every digit known (MPFR's when its
+// polish converged), the certificate and the identity; no source, label or rank yet.
+PackingRecord record_of(const Analysis& analysis);
+// A converged MPFR polish's digits onto a record: d, L and the coordinates (rattlers keep theirs).
+void apply_multiprecision(PackingRecord& record, const MultiprecisionPolish& polish);
+
 // `tripack analyze FILE`: points read in any layout, converted to the unit triangle, analysed.
 struct AnalyzeRequest {
   std::string file;
@@ -89,10 +96,10 @@ struct FileAnalysis {
   Convention convention = Convention::UnitTriangle;
   std::vector<std::string> warnings;  // one line each (rounded input, orientation)
   Analysis analysis;
-  int digits = 15;  // requested; above 18 the MPFR polish ran to this many
+  int digits = 15;  // requested; above kLongDoubleDigits the MPFR polish ran to this many
   double read_seconds = 0;
   // d, L and r or S (d for unit-triangle) with `wanted` significant digits: MPFR's digits when
-  // it ran and more than 18 are wanted, else long double's (at most 18).
+  // it ran and more than kLongDoubleDigits are wanted, else long double's.
   std::string d_string(int wanted) const;
   std::string L_string(int wanted) const;
   std::string value_string(int wanted) const;

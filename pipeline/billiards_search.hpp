@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "constructors/catalogue.hpp"
+#include "core/record.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
@@ -45,22 +46,13 @@ struct RunOutcome {
   bool ran = false;   // false: cancelled before it started
 };
 
-// One distinct packing found: d, its contact graph and rank.
-struct DistinctPacking {
-  std::string label;
-  Pattern pattern;  // polished, with bonds and rattlers
-  std::size_t bonds = 0, rattlers = 0;
-  bool certified = false;
-  std::string verdict;
-  int runs = 0;  // how many runs ended in it
-  std::uint64_t first_seed = 0;
-};
-
 struct BilliardsSearchResult {
   Scene scene;
   int runs_asked = 0;
   std::vector<RunOutcome> runs;           // in seed order
-  std::vector<DistinctPacking> packings;  // best first
+  // The distinct packings the runs ended in (core/record.hpp: one per packing, each with its
+  // billiards source: first seed and runs), ranked and labelled, best first.
+  std::vector<PackingRecord> packings;
   double seconds = 0;                     // wall time of the whole search
 };
 
@@ -69,25 +61,5 @@ struct BilliardsSearchResult {
 void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_n);
 
 BilliardsSearchResult search_billiards(const BilliardsSearch& search);
-
-// The rank letters of the paper extended past z: 0 -> a, 25 -> z, 26 -> aa, 27 -> ab, ... (a
-// bijective base-26 numeral, so every rank has a label and labels sort by length then letters).
-std::string rank_letters(std::size_t rank);
-
-// Labels for packings sorted by decreasing d: tN + rank letters, where packings whose d agree to
-// `d_relative_tolerance` share a rank and get their bond count appended (t17a40), and those that
-// share the bond count too get .1, .2, ... (t31a81.1).
-struct RankKey {
-  long double d = 0;
-  std::size_t bonds = 0;
-};
-std::vector<std::string> paper_labels(long long n, const std::vector<RankKey>& sorted,
-                                      long double d_relative_tolerance = 1e-12L);
-// The order packings are labelled in (indices into `keys`): d decreasing; where d agree to the
-// tolerance, more bonds first, then the smaller `tie` (the first seed: the billiards search and
-// `tripack db` rank alike), then the given order.
-std::vector<std::size_t> label_order(const std::vector<RankKey>& keys,
-                                     const std::vector<std::uint64_t>& tie,
-                                     long double d_relative_tolerance = 1e-12L);
 
 }  // namespace tripack::pipeline

@@ -6,7 +6,8 @@
 #include <stdexcept>
 
 #include "core/io.hpp"
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
+#include "analysis/compare.hpp"
 
 namespace tripack::pipeline {
 
@@ -15,11 +16,25 @@ bool BuildResult::verified() const {
          (!exact || exact->ok);
 }
 
-std::string BuildResult::d_string(int wanted) const {
-  if (multiprecision && multiprecision->converged) return multiprecision->d;
-  if (analysis && wanted > 18) return analysis->d_string(wanted);
-  return format_significant(pattern.packing.d, std::min(wanted, 18));
+namespace {
+
+PackingRecord record_of_build(const BuildResult& b) {
+  PackingRecord record;
+  if (b.analysis) {
+    record = record_of(*b.analysis);
+  } else {
+    record = PackingRecord::of(b.pattern);
+    if (b.multiprecision) apply_multiprecision(record, *b.multiprecision);
+    record.verdict = "not certified (certification skipped)";
+    identify(record);
+  }
+  record.pattern.provenance = b.pattern.provenance;
+  record.sources.push_back({PackingSource::Kind::Builder, member_name(b.pattern.provenance)});
+  record.seconds = b.seconds();
+  return record;
 }
+
+}  // namespace
 
 double BuildResult::seconds() const {
   return times.construct + polish_seconds + times.exact + times.multiprecision +
@@ -56,7 +71,7 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
     options.digits = settings.digits;
     options.progress = settings.progress;
     b.analysis = analyze_packing(b.pattern.packing, options);
-  } else if (settings.digits > 18) {
+  } else if (settings.digits > kLongDoubleDigits) {
     tell("multiprecision polish");
     b.multiprecision = timed(b.times.multiprecision, [&] {
       return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,
@@ -67,6 +82,7 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
   const auto& pv = b.pattern.provenance;
   b.bonds_expected = info.rigid ? catalogue.bonds_of(info, pv.k, pv.p, pv.variant) : std::nullopt;
   b.rattlers_expected = catalogue.rattlers_of(info, pv.k, pv.p, pv.variant);
+  b.record = record_of_build(b);
   return b;
 }
 

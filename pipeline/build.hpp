@@ -16,7 +16,7 @@
 namespace tripack::pipeline {
 
 struct BuildSettings {
-  int digits = 15;      // > 18: MPFR polish to this many digits
+  int digits = 15;      // > kLongDoubleDigits: MPFR polish to this many digits
   bool polish = true;   // Newton on the builder's bond system
   bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
   AnalysisProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
@@ -42,6 +42,10 @@ struct BuildResult {
   std::optional<long long> bonds_expected, rattlers_expected;  // the catalogue's counts
   bool certify_skipped = false;
   int digits = 15;
+  // What the build gives, whichever stages ran: the certified geometry when certified (else the
+  // builder's pattern), d and the coordinates to every digit known, the builder as its source.
+  // Callers use this, not the stages' own patterns and polishes.
+  PackingRecord record;
 
   bool bonds_match() const { return analysis && analysis->pattern.bonds == pattern.bonds; }
   bool rattlers_match() const { return analysis && analysis->pattern.rattlers == pattern.rattlers; }
@@ -51,7 +55,7 @@ struct BuildResult {
   // Everything this build claims holds: catalogue counts, geometry equals the builder's, the
   // certificate, the exact check where one ran.
   bool verified() const;
-  std::string d_string(int digits) const;  // from MPFR when it ran
+  std::string d_string(int digits) const { return record.d.str(digits); }
   double seconds() const;                  // every stage
 };
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
 
 namespace tripack::pipeline {
 

@@ -1,6 +1,6 @@
 #include "pipeline/compare.hpp"
 
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
 
 namespace tripack::pipeline {
 

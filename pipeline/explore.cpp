@@ -9,7 +9,7 @@
 #include <set>
 
 #include "core/conventions.hpp"
-#include "pipeline/timing.hpp"
+#include "core/timing.hpp"
 
 namespace tripack::pipeline {
 
@@ -77,50 +77,30 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   return plan;
 }
 
-ExplorePacking packing_of_build(const BuildResult& b, double seconds) {
-  ExplorePacking row;
-  row.n = static_cast<long long>(b.pattern.packing.size());
-  row.member = b.pattern.provenance;
-  row.label = member_tag(row.member);
-  row.pattern = b.analysis ? b.analysis->pattern : b.pattern;
-  if (b.analysis) {
-    row.certified = b.analysis->certified();
-    row.verdict = b.analysis->status();
-    row.forces = b.analysis->stress.forces;
-  } else {
-    row.verdict = "not certified (certification skipped)";
-  }
-  row.source = "builder";
+PackingRecord packing_of_build(const BuildResult& b, double seconds) {
+  PackingRecord row = b.record;
+  row.label = member_tag(row.pattern.provenance);
+  row.rank = 0;
   row.seconds = seconds;
-  row.proven_optimal = proven_optimal(row.n);
+  row.proven_optimal = proven_optimal(row.n());
   return row;
 }
 
-ExplorePacking packing_of_search(const DistinctPacking& x, std::size_t rank, double seconds,
-                                 const std::vector<RunOutcome>& runs) {
-  ExplorePacking row;
-  row.n = static_cast<long long>(x.pattern.packing.size());
-  row.rank = static_cast<int>(rank + 1);
-  row.label = x.label;
-  row.pattern = x.pattern;
-  row.certified = x.certified;
-  row.verdict = x.verdict;
-  for (const auto& run : runs)
-    if (run.seed == x.first_seed && run.analysis) row.forces = run.analysis->stress.forces;
-  row.source = "billiards";
+PackingRecord packing_of_search(const PackingRecord& x, double seconds) {
+  PackingRecord row = x;
   row.seconds = seconds;
-  row.proven_optimal = proven_optimal(row.n);
+  row.proven_optimal = proven_optimal(row.n());
   return row;
 }
 
 // The best builder row for each n (largest d).
-std::map<long long, const ExplorePacking*> best_builder_by_n(
-    const std::vector<ExplorePacking>& rows) {
-  std::map<long long, const ExplorePacking*> best;
+std::map<long long, const PackingRecord*> best_builder_by_n(
+    const std::vector<PackingRecord>& rows) {
+  std::map<long long, const PackingRecord*> best;
   for (const auto& r : rows)
-    if (r.source == "builder" &&
-        (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d))
-      best[r.n] = &r;
+    if (r.from_builder() &&
+        (!best.count(r.n()) || r.pattern.packing.d > best[r.n()]->pattern.packing.d))
+      best[r.n()] = &r;
   return best;
 }
 
@@ -128,10 +108,10 @@ void compare_with_builders(ExploreResult& result, long long n, const BilliardsSe
   if (found.packings.empty()) return;
   // Every builder row of this n learns its billiards label when the search found it.
   for (auto& row : result.packings) {
-    if (row.source != "builder" || row.n != n) continue;
+    if (!row.from_builder() || row.n() != n) continue;
     for (std::size_t i = 0; i < found.packings.size(); ++i)
-      if (compare_packings(row.pattern, found.packings[i].pattern).same) {
-        row.rank = static_cast<int>(i + 1);
+      if (same_packing(row, found.packings[i])) {
+        row.rank = i + 1;
         row.label = found.packings[i].label;
         break;
       }
@@ -139,20 +119,20 @@ void compare_with_builders(ExploreResult& result, long long n, const BilliardsSe
   const auto best = best_builder_by_n(result.packings);
   const auto it = best.find(n);
   if (it == best.end()) return;
-  const ExplorePacking& b = *it->second;
-  const DistinctPacking& x = found.packings.front();
+  const PackingRecord& b = *it->second;
+  const PackingRecord& x = found.packings.front();
   const Comparison c = compare_packings(b.pattern, x.pattern);
   ExploreComparison row;
   row.n = n;
-  row.builder = member_name(b.member);
+  row.builder = member_name(b.pattern.provenance);
   row.billiards_label = x.label;
   row.d_builder = b.pattern.packing.d;
   row.d_billiards = x.pattern.packing.d;
   row.d_relative_difference = (row.d_billiards - row.d_builder) / row.d_builder;
   row.bonds_builder = b.pattern.bonds.size();
-  row.bonds_billiards = x.bonds;
+  row.bonds_billiards = x.bonds();
   row.rattlers_builder = b.pattern.rattlers.size();
-  row.rattlers_billiards = x.rattlers;
+  row.rattlers_billiards = x.rattlers();
   row.same_contact_graph = c.isomorphic;
   row.same_packing = c.same;
   row.symmetry = c.symmetry ? std::string(symmetry_name(*c.symmetry)) : "";
@@ -162,28 +142,28 @@ void compare_with_builders(ExploreResult& result, long long n, const BilliardsSe
 
 // L(n(k)+1) - L(n(k)) for every class member whose n + 1 has a value here.
 std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
-                                    const std::vector<ExplorePacking>& rows) {
-  std::map<long long, const ExplorePacking*> best;  // best d for each n, any source
+                                    const std::vector<PackingRecord>& rows) {
+  std::map<long long, const PackingRecord*> best;  // best d for each n, any source
   for (const auto& r : rows)
-    if (!best.count(r.n) || r.pattern.packing.d > best[r.n]->pattern.packing.d) best[r.n] = &r;
+    if (!best.count(r.n()) || r.pattern.packing.d > best[r.n()]->pattern.packing.d) best[r.n()] = &r;
   std::vector<ClassGap> gaps;
   std::set<std::tuple<std::string, long, long>> seen;
   for (const auto& r : rows) {
-    if (r.source != "builder" || !seen.insert({r.member.class_id, r.member.k, r.member.p}).second)
+    if (!r.from_builder() || !seen.insert({r.pattern.provenance.class_id, r.pattern.provenance.k, r.pattern.provenance.p}).second)
       continue;
-    const auto next = best.find(r.n + 1);
+    const auto next = best.find(r.n() + 1);
     if (next == best.end()) continue;
     ClassGap g;
-    g.class_id = r.member.class_id;
-    g.k = r.member.k;
-    g.p = r.member.p;
-    g.n = r.n;
+    g.class_id = r.pattern.provenance.class_id;
+    g.k = r.pattern.provenance.k;
+    g.p = r.pattern.provenance.p;
+    g.n = r.n();
     g.L_n = 1 / r.pattern.packing.d;
     g.L_next = 1 / next->second->pattern.packing.d;
-    g.next_source = next->second->source == "builder"
-                        ? "builder: " + member_name(next->second->member)
+    g.next_source = next->second->from_builder()
+                        ? "builder: " + member_name(next->second->pattern.provenance)
                         : "billiards: " + next->second->label;
-    g.claim_tight = catalogue.find(r.member.class_id).claim_tight;
+    g.claim_tight = catalogue.find(r.pattern.provenance.class_id).claim_tight;
     gaps.push_back(g);
   }
   return gaps;
@@ -191,7 +171,7 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
 
 // A class member built and certified; when the certificate's LP fails (near-degenerate members,
 // README "Known limits") the polished build is kept, marked not certified, with the reason.
-ExplorePacking build_row(const Catalogue& catalogue, const BuildRequest& request) {
+PackingRecord build_row(const Catalogue& catalogue, const BuildRequest& request) {
   const auto start = Clock::now();
   try {
     return packing_of_build(build_and_certify(catalogue, request, BuildSettings{}),
@@ -199,7 +179,7 @@ ExplorePacking build_row(const Catalogue& catalogue, const BuildRequest& request
   } catch (const std::exception& certify_error) {
     BuildSettings polish_only;
     polish_only.certify = false;
-    ExplorePacking row =
+    PackingRecord row =
         packing_of_build(build_and_certify(catalogue, request, polish_only), seconds_since(start));
     row.verdict = std::string("not certified: ") + certify_error.what();
     return row;
@@ -281,7 +261,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       const BilliardsSearchResult found = search_billiards(search);
       const double seconds = seconds_since(t0);
       for (std::size_t i = 0; i < found.packings.size(); ++i)
-        result.packings.push_back(packing_of_search(found.packings[i], i, seconds, found.runs));
+        result.packings.push_back(packing_of_search(found.packings[i], seconds));
       compare_with_builders(result, n, found);
     } catch (const std::exception& e) {
       result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
@@ -304,16 +284,16 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     done += kAccuracyCost;
   }
   std::stable_sort(result.packings.begin(), result.packings.end(),
-                   [](const ExplorePacking& a, const ExplorePacking& b) {
-                     if (a.n != b.n) return a.n < b.n;
-                     return a.source == "builder" && b.source != "builder";
+                   [](const PackingRecord& a, const PackingRecord& b) {
+                     if (a.n() != b.n()) return a.n() < b.n();
+                     return a.from_builder() && !b.from_builder();
                    });
   // A proven optimum is the best packing of its n: a worse local optimum there (sparse-corner
   // at 13, below sparse-rows' t13a) is no proven optimum.
   std::map<long long, long double> best_d;
-  for (const auto& r : result.packings) best_d[r.n] = std::max(best_d[r.n], r.pattern.packing.d);
+  for (const auto& r : result.packings) best_d[r.n()] = std::max(best_d[r.n()], r.pattern.packing.d);
   for (auto& r : result.packings)
-    r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n] * (1 - 1e-12L);
+    r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n()] * (1 - 1e-12L);
   result.class_gaps = class_gaps_of(catalogue, result.packings);
   result.interrupted = cancel;
   result.seconds = seconds_since(start);

@@ -14,6 +14,7 @@
 #include "pipeline/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/compare.hpp"
+#include "core/record.hpp"
 
 namespace tripack::pipeline {
 
@@ -29,24 +30,6 @@ struct ExploreSettings {
   int threads = 2;
   std::uint64_t seed = 1;
   bool accuracy = true;  // the accuracy-against-time study and the hard cases (SPEC §6)
-};
-
-// One row of packings.csv: a built class member or a distinct billiards packing.
-struct ExplorePacking {
-  long long n = 0;
-  int rank = 0;       // billiards: 1 = best found; builder: the rank of the same packing
-                      // among the billiards ones, 0 when billiards did not find it (or ran not)
-  std::string label;  // billiards label (t22a); builder: the label of the same billiards
-                      // packing, else "class-k[-p][-variant]"
-  Provenance member;  // builder rows (class_id empty for billiards rows)
-  Pattern pattern;    // polished, bonds and rattlers from the geometry when certified
-  std::vector<long double> forces;  // stress certificate per bond (empty when not certified)
-  bool certified = false;
-  std::string verdict;
-  std::string source;  // "builder" or "billiards"
-  double seconds = 0;
-  bool proven_optimal =
-      false;  // the best of its n, and n = Delta(k) (Oler) or n <= 15 (GL1995 Sec.1)
 };
 
 // One row of compare.csv.
@@ -79,7 +62,10 @@ struct ExploreProgress {
 
 struct ExploreResult {
   ExploreSettings settings;
-  std::vector<ExplorePacking> packings;  // by n, builder rows first, then billiards by rank
+  // One record per row of packings.csv: by n, builder rows first (label: the billiards label of
+  // the same packing, else "class-k[-p][-variant]"; rank: that packing's billiards rank, 0 when
+  // billiards did not find it), then the billiards packings by rank.
+  std::vector<PackingRecord> packings;
   std::vector<ExploreComparison> comparisons;
   std::vector<ClassGap> class_gaps;
   std::optional<AccuracyStudy> accuracy;

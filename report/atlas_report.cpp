@@ -17,20 +17,20 @@ using nlohmann::json;
 
 namespace {
 
-json row_json(const campaign::AtlasRow& r) {
-  return {{"n", r.n},
+json row_json(const PackingRecord& r) {
+  return {{"n", r.n()},
           {"rank", r.rank},
           {"label", r.label},
-          {"d", r.d},
-          {"L", r.L},
-          {"delta", r.delta},
+          {"d", r.d.str()},
+          {"L", r.L.str()},
+          {"delta", campaign::atlas_delta(r)},
           {"bonds", r.pattern.bonds.size()},
           {"rattlers", r.pattern.rattlers.size()},
           {"rattler_indices", r.pattern.rattlers},
           {"certified", r.certified},
           {"verdict", r.verdict},
-          {"source", r.source},
-          {"runs", r.runs},
+          {"source", r.source_text()},
+          {"runs", r.runs()},
           {"file", r.file}};
 }
 
@@ -41,8 +41,8 @@ void render_text(std::ostream& out, const campaign::AtlasResult& a, const Render
                      "source");
   for (const auto& r : a.rows)
     if (r.rank == 1)
-      out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5}  {}\n", r.n, r.label, r.d,
-                         r.pattern.bonds.size(), r.pattern.rattlers.size(), r.source);
+      out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5}  {}\n", r.n(), r.label, r.d.str(),
+                         r.bonds(), r.rattlers(), r.source_text());
   for (const auto& b : a.builders)
     if (b.rank != 1)
       out << fmt::format("builder {} (n = {}): d = {}, {}\n", b.member, b.n, b.d,

@@ -41,39 +41,49 @@ std::string flag(bool b) {
   return b ? "true" : "false";
 }
 
-std::string first_seed_text(const store::StoredPacking& p) {
-  return p.has_seed ? std::to_string(p.first_seed) : "-";
+std::string first_seed_text(const PackingRecord& p) {
+  return p.has_seed() ? std::to_string(p.first_seed()) : "-";
+}
+
+// The database's origin of a packing: "import" (a file) or "campaign" (a run found it first).
+std::string origin_of(const PackingRecord& p) { return p.origin() == "import" ? "import" : "campaign"; }
+
+// The imported file's name ("" for a campaign's packing).
+std::string import_name(const PackingRecord& p) {
+  for (const auto& s : p.sources)
+    if (s.kind == PackingSource::Kind::Import) return s.name;
+  return "";
 }
 
 // "campaign" or "file NAME".
-std::string source_text(const store::StoredPacking& p) {
-  return p.origin == "import" ? "file " + p.source : p.origin;
+std::string source_text(const PackingRecord& p) {
+  return origin_of(p) == "import" ? "file " + import_name(p) : origin_of(p);
 }
 
 // ----- the best-packing table (db best, campaign) --------------------------------------------
 
-json ranked_json(const campaign::RankedPacking& r, const RenderOptions& o) {
-  const auto& p = r.packing;
-  const long double L = 1 / std::stold(p.d);
-  json j{{"n", p.n},
-         {"rank", r.rank},
-         {"label", r.label},
-         {"d", p.d},
+json ranked_json(const PackingRecord& p, const RenderOptions& o) {
+  const long double L = 1 / p.d.value();
+  json j{{"n", p.n()},
+         {"rank", p.rank},
+         {"label", p.label},
+         {"d", p.d.str(kLongDoubleDigits)},
          {"L", decimal17(L)},
-         {"delta", static_cast<double>(oler_delta(p.n, L))},
-         {"bonds", p.bonds.size()},
-         {"rattlers", p.rattlers.size()},
-         {"rattler_indices", p.rattlers},
+         {"delta", static_cast<double>(oler_delta(p.n(), L))},
+         {"bonds", p.bonds()},
+         {"rattlers", p.rattlers()},
+         {"rattler_indices", p.pattern.rattlers},
          {"certified", p.certified},
-         {"runs", p.runs},
-         {"first_seed", p.has_seed ? json(p.first_seed) : json(nullptr)},
-         {"origin", p.origin},
-         {"source", p.source.empty() ? json(nullptr) : json(p.source)},
+         {"runs", p.runs()},
+         {"first_seed", p.has_seed() ? json(p.first_seed()) : json(nullptr)},
+         {"origin", origin_of(p)},
+         {"source", import_name(p).empty() ? json(nullptr) : json(import_name(p))},
          {"graph_hash", p.graph_hash}};
   if (o.points) {
     json points = json::array();
-    for (const auto& q : p.points)
-      points.push_back({format_significant(q.x, 21), format_significant(q.y, 21)});
+    for (const auto& q : p.pattern.packing.points)
+      points.push_back({format_significant(q.x, kLongDoubleRoundTripDigits),
+                        format_significant(q.y, kLongDoubleRoundTripDigits)});
     j["points"] = std::move(points);
   }
   return j;
@@ -90,22 +100,19 @@ json best_json(const campaign::BestTable& t, const RenderOptions& o) {
 void best_text(std::ostream& out, const campaign::BestTable& t) {
   out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", "n", "d", "label", "runs",
                      "first seed", "source");
-  for (const auto& r : t.rows) {
-    const auto& p = r.packing;
-    out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", p.n, p.d, r.label, p.runs,
-                       first_seed_text(p), source_text(p));
-  }
+  for (const auto& p : t.rows)
+    out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", p.n(), p.d.str(kLongDoubleDigits),
+                       p.label, p.runs(), first_seed_text(p), source_text(p));
 }
 
 void best_csv(std::ostream& out, const campaign::BestTable& t) {
   row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
             "origin", "source", "graph_hash"});
-  for (const auto& r : t.rows) {
-    const auto& p = r.packing;
-    row(out, {integer(p.n), integer(r.rank), r.label, p.d, integer(p.bonds.size()),
-              integer(p.rattlers.size()), flag(p.certified), integer(p.runs),
-              p.has_seed ? integer(p.first_seed) : "", p.origin, p.source, p.graph_hash});
-  }
+  for (const auto& p : t.rows)
+    row(out, {integer(p.n()), integer(p.rank), p.label, p.d.str(kLongDoubleDigits),
+              integer(p.bonds()), integer(p.rattlers()), flag(p.certified), integer(p.runs()),
+              p.has_seed() ? integer(p.first_seed()) : "", origin_of(p), import_name(p),
+              p.graph_hash});
 }
 
 }  // namespace

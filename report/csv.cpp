@@ -54,8 +54,8 @@ void packing_rows(std::ostream& out, const BilliardsSearchResult& r) {
     const auto& x = r.packings[i];
     const long double d = x.pattern.packing.d;
     row(out, {integer(r.scene.n), integer(i + 1), x.label, num(d), num(1 / d),
-              num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds), integer(x.rattlers),
-              flag(x.certified), integer(x.runs), integer(x.first_seed)});
+              num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds()),
+              integer(x.rattlers()), flag(x.certified), integer(x.runs()), integer(x.first_seed())});
   }
 }
 
@@ -131,13 +131,13 @@ void render_csv(std::ostream& out, const ConstructedVsBilliards& c, const Render
             "billiards_label", "d_billiards", "bonds_billiards", "rattlers_billiards",
             "d_relative_difference", "same_contact_graph", "same_packing", "symmetry"});
   const BuildResult* b = c.constructed ? &c.constructed->best : nullptr;
-  const DistinctPacking* x = c.billiards.packings.empty() ? nullptr : &c.billiards.packings.front();
+  const PackingRecord* x = c.billiards.packings.empty() ? nullptr : &c.billiards.packings.front();
   row(out,
       {integer(c.n), b ? member_name(b->pattern.provenance) : "",
        b ? num(b->pattern.packing.d) : "", b ? integer(b->pattern.bonds.size()) : "",
        b ? integer(b->pattern.rattlers.size()) : "", x ? x->label : "",
-       x ? num(x->pattern.packing.d) : "", x ? integer(x->bonds) : "",
-       x ? integer(x->rattlers) : "",
+       x ? num(x->pattern.packing.d) : "", x ? integer(x->bonds()) : "",
+       x ? integer(x->rattlers()) : "",
        c.comparison ? num(static_cast<double>(c.d_relative_difference)) : "",
        c.comparison ? flag(c.comparison->isomorphic) : "",
        c.comparison ? flag(c.comparison->same) : "",

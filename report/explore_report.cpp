@@ -22,8 +22,8 @@ using namespace pipeline;
 
 namespace {
 
-std::string class_of(const ExplorePacking& r) {
-  return r.member.class_id;
+std::string class_of(const PackingRecord& r) {
+  return r.pattern.provenance.class_id;
 }
 
 std::string packings_csv(const ExploreResult& result) {
@@ -32,11 +32,11 @@ std::string packings_csv(const ExploreResult& result) {
   for (const auto& r : result.packings) {
     const long double d = r.pattern.packing.d;
     out << fmt::format(
-        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n, r.rank, csv_field(r.label),
-        class_of(r), r.member.p ? std::to_string(r.member.p) : "",
-        r.member.class_id.empty() ? "" : std::to_string(r.member.k), csv_field(r.member.variant),
-        decimal17(d), decimal17(1 / d), decimal17(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
-        r.pattern.rattlers.size(), r.certified ? "true" : "false", r.source, r.seconds,
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n(), r.rank, csv_field(r.label),
+        class_of(r), r.pattern.provenance.p ? std::to_string(r.pattern.provenance.p) : "",
+        r.pattern.provenance.class_id.empty() ? "" : std::to_string(r.pattern.provenance.k), csv_field(r.pattern.provenance.variant),
+        decimal17(d), decimal17(1 / d), decimal17(oler_delta(r.n(), 1 / d)), r.pattern.bonds.size(),
+        r.pattern.rattlers.size(), r.certified ? "true" : "false", r.origin(), r.seconds,
         packing_file_name(r));
   }
   return out.str();
@@ -47,25 +47,25 @@ std::string packings_json(const ExploreResult& result) {
   for (const auto& r : result.packings) {
     const long double d = r.pattern.packing.d;
     rows.push_back(
-        {{"n", r.n},
+        {{"n", r.n()},
          {"rank", r.rank},
          {"label", r.label},
          {"class",
-          r.member.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.class_id)},
-         {"p", r.member.p ? nlohmann::json(r.member.p) : nlohmann::json(nullptr)},
-         {"k", r.member.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.k)},
+          r.pattern.provenance.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.class_id)},
+         {"p", r.pattern.provenance.p ? nlohmann::json(r.pattern.provenance.p) : nlohmann::json(nullptr)},
+         {"k", r.pattern.provenance.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.k)},
          {"variant",
-          r.member.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.member.variant)},
+          r.pattern.provenance.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.variant)},
          {"d", decimal17(d)},
          {"L", decimal17(1 / d)},
-         {"delta", decimal17(oler_delta(r.n, 1 / d))},
+         {"delta", decimal17(oler_delta(r.n(), 1 / d))},
          {"bonds", r.pattern.bonds.size()},
          {"rattlers", r.pattern.rattlers.size()},
          {"rattler_indices", r.pattern.rattlers},
          {"certified", r.certified},
          {"verdict", r.verdict},
          {"proven_optimal", r.proven_optimal},
-         {"source", r.source},
+         {"source", r.origin()},
          {"seconds", r.seconds},
          {"file", packing_file_name(r)}});
   }
@@ -104,21 +104,21 @@ std::string classes_csv(const ExploreResult& result) {
 std::vector<DeltaPoint> delta_points(const ExploreResult& result, const ExploreAtlas* atlas) {
   std::vector<DeltaPoint> points;
   std::set<std::pair<std::string, long long>> seen;
-  std::map<long long, const ExplorePacking*> billiards_best;
+  std::map<long long, const PackingRecord*> billiards_best;
   std::set<long long> in_class;
   for (const auto& r : result.packings) {
-    if (r.source == "builder") in_class.insert(r.n);
-    if (r.source == "billiards" && r.rank == 1) billiards_best[r.n] = &r;
+    if (r.from_builder()) in_class.insert(r.n());
+    if (!r.from_builder() && r.rank == 1) billiards_best[r.n()] = &r;
   }
   for (const auto& r : result.packings) {
-    if (r.source != "builder" ||
-        !seen.insert({r.member.class_id + std::to_string(r.member.p), r.n}).second)
+    if (!r.from_builder() ||
+        !seen.insert({r.pattern.provenance.class_id + std::to_string(r.pattern.provenance.p), r.n()}).second)
       continue;
-    const double delta = static_cast<double>(oler_delta(r.n, 1 / r.pattern.packing.d));
+    const double delta = static_cast<double>(oler_delta(r.n(), 1 / r.pattern.packing.d));
     // The matrix class is two-parametric: one line per row p (GL1995: rows are tight).
     const std::string line =
-        r.member.p ? fmt::format("{} p={}", r.member.class_id, r.member.p) : r.member.class_id;
-    points.push_back({r.n, delta, line, r.proven_optimal, false});
+        r.pattern.provenance.p ? fmt::format("{} p={}", r.pattern.provenance.class_id, r.pattern.provenance.p) : r.pattern.provenance.class_id;
+    points.push_back({r.n(), delta, line, r.proven_optimal, false});
   }
   for (const auto& [n, r] : billiards_best) {
     const double delta = static_cast<double>(oler_delta(n, 1 / r->pattern.packing.d));
@@ -126,13 +126,12 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result, const ExploreA
     if (!in_class.count(n)) points.push_back({n, delta, "", r->proven_optimal, false});
   }
   if (atlas)
-    for (const auto& e : atlas->entries) {
-      if (e.rank != 1) continue;
-      const double delta = std::stod(e.delta);
-      points.push_back({e.n, delta, "", false, false, true});
+    for (const auto& e : atlas->best) {
+      const double delta = std::stod(campaign::atlas_delta(e));
+      points.push_back({e.n(), delta, "", false, false, true});
       // n in no class that the exploration did not search: its open square from the atlas.
-      if (!in_class.count(e.n) && !billiards_best.count(e.n))
-        points.push_back({e.n, delta, "", false, false});
+      if (!in_class.count(e.n()) && !billiards_best.count(e.n()))
+        points.push_back({e.n(), delta, "", false, false});
     }
   return points;
 }
@@ -195,16 +194,17 @@ std::string html_escape(const std::string& s) {
 // of diagrams before these limits.
 constexpr long long kForcesMaxN = 100;
 
-bool forces_drawn(const ExplorePacking& r) {
-  return r.source == "builder" && r.certified && r.n <= kForcesMaxN &&
+bool forces_drawn(const PackingRecord& r) {
+  return r.from_builder() && r.certified && r.n() <= kForcesMaxN &&
          r.forces.size() == r.pattern.bonds.size();
 }
 
-bool svg_drawn(const ExplorePacking& r, const ExploreSettings& settings) {
-  return r.n <= settings.max_n;
-}
+// One raster per diagram (the report's size: an SVG and a PNG of each of ~860 packings weighed
+// ~200 MB, mostly the SVGs' glyphs): PNGs at 1.6x the page's 220 px, forces at 2x.
+constexpr int kDiagramPixels = 360;
+constexpr int kForcesPixels = 440;
 
-std::string atlas_diagram(const campaign::AtlasEntry& e) {
+std::string atlas_diagram(const PackingRecord& e) {
   return "diagrams/atlas-" + e.label + ".png";
 }
 
@@ -212,51 +212,51 @@ std::string atlas_diagram(const campaign::AtlasEntry& e) {
 // every n with a diagram, and the files (copied into atlas/).
 std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, bool diagrams) {
   std::ostringstream h;
-  std::map<long long, const ExplorePacking*> best_builder;
+  std::map<long long, const PackingRecord*> best_builder;
   for (const auto& r : result.packings)
-    if (r.source == "builder" && r.certified &&
-        (!best_builder.count(r.n) || r.pattern.packing.d > best_builder[r.n]->pattern.packing.d))
-      best_builder[r.n] = &r;
+    if (r.from_builder() && r.certified &&
+        (!best_builder.count(r.n()) || r.pattern.packing.d > best_builder[r.n()]->pattern.packing.d))
+      best_builder[r.n()] = &r;
   long long first = 0, last = 0;
   std::size_t count = 0;
-  for (const auto& e : atlas.entries)
-    if (e.rank == 1) {
-      first = count ? std::min(first, e.n) : e.n;
-      last = std::max(last, e.n);
-      ++count;
-    }
+  for (const auto& e : atlas.best) {
+    first = count ? std::min(first, e.n()) : e.n();
+    last = std::max(last, e.n());
+    ++count;
+  }
   h << fmt::format(
       "<h2 id=\"atlas\">Atlas: the best certified packing of every n = {}..{}</h2>\n<p>From "
-      "<a href=\"atlas/atlas.csv\">atlas.csv</a> ({} rows; copied from {}): billiards campaigns "
+      "<a href=\"atlas/atlas.csv\">atlas.csv</a> ({} rows; copied from the project's {}): "
+      "billiards campaigns "
       "and every builder whose class contains n, each certified again from its coordinates and "
       "polished in MPFR to 30 digits; every file is in <a href=\"atlas/atlas/\">atlas/atlas/</a>. "
       "In the &delta;(n) plot above its values are the grey dots.</p>\n",
-      first, last, atlas.entries.size(), html_escape(atlas.csv.string()));
+      first, last, atlas.rows.size(),
+      html_escape((atlas.csv.parent_path().filename() / atlas.csv.filename()).string()));
   h << "<h3>Where the atlas beats every builder of n</h3>\n<table><tr><th>n</th><th>best "
        "builder</th><th>d builder</th><th>atlas</th><th>d atlas</th><th>gain</th><th>bonds</th>"
        "<th>rattlers</th><th>source</th></tr>\n";
-  for (const auto& e : atlas.entries) {
-    if (e.rank != 1 || !best_builder.count(e.n)) continue;
-    const auto* b = best_builder[e.n];
-    const long double d_atlas = std::stold(e.d), d_builder = b->pattern.packing.d;
+  for (const auto& e : atlas.best) {
+    if (!best_builder.count(e.n())) continue;
+    const auto* b = best_builder[e.n()];
+    const long double d_atlas = e.d.value(), d_builder = b->pattern.packing.d;
     if (d_atlas <= d_builder * (1 + 1e-12L)) continue;
     h << fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.3g}</td><td>{}</td>"
         "<td>{}</td><td>{}</td></tr>\n",
-        e.n, html_escape(member_name(b->member)), format_significant(d_builder, 15),
-        html_escape(e.label), e.d.substr(0, 17), static_cast<double>(d_atlas / d_builder - 1),
-        e.bonds, e.rattlers, html_escape(e.source));
+        e.n(), html_escape(member_name(b->pattern.provenance)), format_significant(d_builder, 15),
+        html_escape(e.label), e.d.str().substr(0, 17), static_cast<double>(d_atlas / d_builder - 1),
+        e.bonds(), e.rattlers(), html_escape(e.source_text()));
   }
   h << "</table>\n<h3>Best of every n</h3>\n<table><tr><th>n</th><th>label</th><th>d (30 digits)"
        "</th><th>&delta;</th><th>bonds</th><th>rattlers</th><th>source</th><th>files</th></tr>\n";
-  for (const auto& e : atlas.entries) {
-    if (e.rank != 1) continue;
+  for (const auto& e : atlas.best) {
     h << fmt::format(
         "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
         "<td>{5}</td><td style=\"text-align:left\">{6}</td><td><a href=\"atlas/{7}\">coordinates"
         "</a>{8}</td></tr>\n",
-        html_escape(e.label), e.n, e.d, e.delta.substr(0, 12), e.bonds, e.rattlers,
-        html_escape(e.source), html_escape(e.file),
+        html_escape(e.label), e.n(), e.d.str(), campaign::atlas_delta(e).substr(0, 12), e.bonds(),
+        e.rattlers(), html_escape(e.source_text()), html_escape(e.file),
         diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "");
   }
   h << "</table>\n";
@@ -282,8 +282,8 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
       h << fmt::format(
           "<figure><a href=\"{0}\"><img src=\"{0}\" loading=\"lazy\" alt=\"{1}\"></a>"
           "<figcaption>{1} (n = {2}, d = {3}, {4} bonds, {5} rattlers)</figcaption></figure>\n",
-          atlas_diagram(p.entry), html_escape(p.entry.label), p.entry.n, p.entry.d.substr(0, 17),
-          p.entry.bonds, p.entry.rattlers);
+          atlas_diagram(p), html_escape(p.label), p.n(), p.d.str().substr(0, 17), p.bonds(),
+          p.rattlers());
     h << "</div>\n";
   }
   return h.str();
@@ -366,8 +366,8 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
     h << fmt::format(
         "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.6f}</td><td>{}</td><td>{}</td>"
         "<td>{}</td><td><a href=\"{}\">coordinates</a></td></tr>\n",
-        r.n, html_escape(r.label), r.source, format_significant(d, 15),
-        static_cast<double>(oler_delta(r.n, 1 / d)), r.pattern.bonds.size(),
+        r.n(), html_escape(r.label), r.origin(), format_significant(d, 15),
+        static_cast<double>(oler_delta(r.n(), 1 / d)), r.pattern.bonds.size(),
         r.pattern.rattlers.size(), r.certified ? "yes" : "no", packing_file_name(r));
   }
   h << "</table>\n";
@@ -377,12 +377,11 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
       const std::string stem = packing_file_name(r);
       const std::string base = "diagrams/" + fs::path(stem).stem().string();
       h << fmt::format(
-          "<figure><a href=\"{0}.{5}\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
+          "<figure><a href=\"{0}.png\"><img src=\"{0}.png\" loading=\"lazy\" alt=\"{1}\"></a>"
           "<figcaption>{1} (n = {2}, d = {3}){4}</figcaption></figure>\n",
-          base, html_escape(r.label), r.n, format_significant(r.pattern.packing.d, 15),
+          base, html_escape(r.label), r.n(), format_significant(r.pattern.packing.d, 15),
           forces && forces_drawn(r) ? fmt::format(" <a href=\"{}-forces.png\">forces</a>", base)
-                                    : "",
-          svg_drawn(r, result.settings) ? "svg" : "png");
+                                    : "");
     }
     h << "</div>\n";
   }
@@ -395,13 +394,13 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
 
 }  // namespace
 
-std::string packing_file_name(const ExplorePacking& row) {
-  const std::string name = row.source == "builder"
-                               ? fmt::format("n{:04d}-{}", row.n, row.member.class_id) +
-                                     fmt::format("-k{}", row.member.k) +
-                                     (row.member.p ? fmt::format("-p{}", row.member.p) : "") +
-                                     (row.member.variant.empty() ? "" : "-" + row.member.variant)
-                               : fmt::format("n{:04d}-{}", row.n, row.label);
+std::string packing_file_name(const PackingRecord& row) {
+  const std::string name = row.from_builder()
+                               ? fmt::format("n{:04d}-{}", row.n(), row.pattern.provenance.class_id) +
+                                     fmt::format("-k{}", row.pattern.provenance.k) +
+                                     (row.pattern.provenance.p ? fmt::format("-p{}", row.pattern.provenance.p) : "") +
+                                     (row.pattern.provenance.variant.empty() ? "" : "-" + row.pattern.provenance.variant)
+                               : fmt::format("n{:04d}-{}", row.n(), row.label);
   return "packings/" + name + ".txt";
 }
 
@@ -427,14 +426,13 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     for (const auto& r : result.packings) {
       Diagram diagram{r.pattern, r.label, format_significant(r.pattern.packing.d, 15), r.forces};
       const fs::path base = dir / "diagrams" / fs::path(packing_file_name(r)).stem();
-      if (svg_drawn(r, result.settings)) draw_packing(diagram, base.string() + ".svg");
-      draw_packing(diagram, base.string() + ".png", {440, true, false});  // 2x the page's 220 px
+      draw_packing(diagram, base.string() + ".png", {kDiagramPixels, true, false});
       if (options.forces && forces_drawn(r))
-        draw_packing(diagram, base.string() + "-forces.png", {900, true, true});
+        draw_packing(diagram, base.string() + "-forces.png", {kForcesPixels, true, true});
     }
   }
   if (options.atlas) {
-    say(fmt::format("atlas: {} rows, {} diagrams", options.atlas->entries.size(),
+    say(fmt::format("atlas: {} rows, {} diagrams", options.atlas->rows.size(),
                     options.diagrams ? options.atlas->best.size() : 0));
     const fs::path from = options.atlas->csv.parent_path();
     fs::create_directories(dir / "atlas" / "atlas");
@@ -443,13 +441,13 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     if (fs::exists(from / "atlas-gaps.csv"))
       fs::copy_file(from / "atlas-gaps.csv", dir / "atlas" / "atlas-gaps.csv",
                     fs::copy_options::overwrite_existing);
-    for (const auto& e : options.atlas->entries)
+    for (const auto& e : options.atlas->rows)
       fs::copy_file(from / e.file, dir / "atlas" / e.file, fs::copy_options::overwrite_existing);
     if (options.diagrams)
       for (const auto& p : options.atlas->best) {
-        Diagram diagram{p.pattern, p.entry.label, p.entry.d.substr(0, 17), p.forces};
-        draw_packing(diagram, (dir / atlas_diagram(p.entry)).string(),
-                     {440, p.entry.n <= 60, false});
+        Diagram diagram{p.pattern, p.label, p.d.str().substr(0, 17), p.forces};
+        draw_packing(diagram, (dir / atlas_diagram(p)).string(),
+                     {kDiagramPixels, p.n() <= 60, false});
       }
   }
   say("plot: delta.svg, delta.png, delta.pdf");

@@ -18,10 +18,10 @@ namespace tripack::report {
 // in the delta(n) plot (grey dots), a table, a diagram per n, the n where it beats every
 // builder; its table and files are copied into DIR/atlas/ so the report stays self-contained.
 struct ExploreAtlas {
-  std::filesystem::path csv;                  // where atlas.csv was read
-  std::vector<campaign::AtlasEntry> entries;  // every row
-  std::vector<campaign::AtlasPacking> best;   // the rank-1 rows, read back and analysed
-  std::vector<campaign::AtlasGap> gaps;       // atlas-gaps.csv beside it (empty if absent)
+  std::filesystem::path csv;              // where atlas.csv was read
+  std::vector<PackingRecord> rows;        // every row as read (no bonds: files keep none)
+  std::vector<PackingRecord> best;        // the rank-1 rows, read back and analysed
+  std::vector<campaign::AtlasGap> gaps;   // atlas-gaps.csv beside it (empty if absent)
 };
 
 struct ExploreReportOptions {
@@ -37,6 +37,6 @@ void write_explore_report(const pipeline::ExploreResult& result, const std::file
                           const std::function<void(const std::string&)>& progress = {});
 
 // The coordinate file name of a packing row, relative to the report directory.
-std::string packing_file_name(const pipeline::ExplorePacking& row);
+std::string packing_file_name(const PackingRecord& row);
 
 }  // namespace tripack::report

@@ -140,8 +140,8 @@ json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
            {"delta", static_cast<double>(oler_delta(r.scene.n, 1 / x.pattern.packing.d))},
            {"certified", x.certified},
            {"verdict", x.verdict},
-           {"runs", x.runs},
-           {"first_seed", x.first_seed}};
+           {"runs", x.runs()},
+           {"first_seed", x.first_seed()}};
     add_counts(p, x.pattern);
     if (o.points) p["points"] = points_json(x.pattern.packing);
     j["packings"].push_back(p);

@@ -196,8 +196,8 @@ void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
   for (const auto& x : r.packings)
     out << fmt::format(
         "  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} runs, first seed {})\n", x.label,
-        format_significant(x.pattern.packing.d, 15), x.bonds, x.rattlers,
-        x.certified ? "certified" : "NOT certified", x.runs, r.runs_asked, x.first_seed);
+        x.d.str(15), x.bonds(), x.rattlers(), x.certified ? "certified" : "NOT certified", x.runs(),
+        r.runs_asked, x.first_seed());
 }
 
 }  // namespace

@@ -188,7 +188,7 @@ std::vector<int> parse_ints(const std::string& text) {
 
 // The key under which two stored d are the same packing's: 12 significant digits.
 std::string d_key(const std::string& d) {
-  return format_significant(std::stold(d), 12);
+  return identity_d_key(std::stold(d));
 }
 
 constexpr const char* kPackingColumns =
@@ -216,13 +216,16 @@ StoredPacking packing_from_row(const Statement& s) {
   return p;
 }
 
-// The row of the same packing (n, contact graph, d to 12 digits), if stored.
+// The row of the same packing (core/record.hpp's same_packing: n, contact graph, d), if stored.
 std::optional<long long> find_packing(sqlite3* db, const std::string& path,
                                       const StoredPacking& p) {
-  Statement find(db, path,
-                 "SELECT id FROM packings WHERE n = ?1 AND graph_hash = ?2 AND d_key = ?3");
-  find.bind(1, p.n).bind(2, p.graph_hash).bind(3, d_key(p.d));
-  if (find.step()) return find.integer(0);
+  Statement find(db, path, "SELECT id, d FROM packings WHERE n = ?1 AND graph_hash = ?2");
+  find.bind(1, p.n).bind(2, p.graph_hash);
+  const IdentityFields wanted{p.n, p.graph_hash, std::stold(p.d)};
+  while (find.step()) {
+    const std::string d = find.text(1);
+    if (same_packing(wanted, {p.n, p.graph_hash, std::stold(d)})) return find.integer(0);
+  }
   return std::nullopt;
 }
 
@@ -613,6 +616,42 @@ DbStatistics ResultsDb::statistics() const {
     throw;
   }
   return st;
+}
+
+PackingRecord record_of(const StoredPacking& stored) {
+  Pattern pattern;
+  pattern.packing.points = stored.points;
+  pattern.packing.d = std::stold(stored.d);
+  pattern.bonds = stored.bonds;
+  pattern.rattlers = stored.rattlers;
+  PackingRecord record = PackingRecord::of(std::move(pattern));
+  record.certified = stored.certified;
+  record.graph_hash = stored.graph_hash;
+  if (stored.origin == "import") record.sources.push_back({PackingSource::Kind::Import, stored.source});
+  if (stored.has_seed)
+    record.sources.push_back({PackingSource::Kind::Billiards, "", stored.first_seed, stored.runs});
+  return record;
+}
+
+StoredPacking stored_of(const PackingRecord& record, const std::string& tool_version) {
+  StoredPacking stored;
+  stored.n = record.n();
+  stored.d = record.d.str(kLongDoubleDigits);
+  stored.graph_hash = record.graph_hash;
+  stored.points = record.pattern.packing.points;
+  stored.bonds = record.pattern.bonds;
+  stored.rattlers = record.pattern.rattlers;
+  stored.certified = record.certified;
+  stored.has_seed = record.has_seed();
+  stored.first_seed = stored.has_seed ? record.first_seed() : 0;
+  stored.runs = record.runs();
+  for (const auto& s : record.sources)
+    if (s.kind == PackingSource::Kind::Import) {
+      stored.origin = "import";
+      stored.source = s.name;
+    }
+  stored.tool_version = tool_version;
+  return stored;
 }
 
 }  // namespace tripack::store

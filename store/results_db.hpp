@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/packing.hpp"
+#include "core/record.hpp"
 
 struct sqlite3;
 
@@ -46,6 +47,12 @@ struct StoredPacking {
   std::string source;               // the imported file's name; empty for a campaign's
   std::string tool_version;
 };
+
+// The row as the one packing record (core/record.hpp) and back: sources from origin, seed and
+// runs ("campaign" is a billiards source, "import" an import source named by `source`, plus a
+// billiards source once a run has found it), d as stored (kLongDoubleDigits digits).
+PackingRecord record_of(const StoredPacking& stored);
+StoredPacking stored_of(const PackingRecord& record, const std::string& tool_version);
 
 // What `tripack db check` reports. Counts come from the tables themselves (GROUP BY), so a
 // duplicate the unique constraints should have prevented is seen.

@@ -36,7 +36,7 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
       campaign::read_atlas(std::filesystem::path(TRIPACK_SOURCE_DIR) / "data" / "atlas.csv");
   std::map<long long, long double> best;
   for (const auto& e : entries)
-    if (e.rank == 1) best[e.n] = std::stold(e.d);
+    if (e.rank == 1) best[e.n()] = e.d.value();
   int members = 0;
   for (const auto& member : pipeline::class_members_up_to(catalogue, 200)) {
     const Pattern built = build_pattern(catalogue, member);
@@ -73,34 +73,35 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   EXPECT_TRUE(atlas.missing.empty());
   std::map<long long, int> rows_of_n;
   for (const auto& row : atlas.rows) {
-    ++rows_of_n[row.n];
+    ++rows_of_n[row.n()];
     EXPECT_TRUE(row.certified) << row.label;
-    EXPECT_EQ(row.points.size(), static_cast<std::size_t>(row.n));
-    EXPECT_EQ(row.d.size(), 32u) << row.d;  // "0." and 30 digits: every d here is in (0.1, 1)
-    EXPECT_NEAR(static_cast<double>(std::stold(row.d) - row.pattern.packing.d), 0, 1e-17);
+    EXPECT_EQ(row.precise_points.size(), static_cast<std::size_t>(row.n()));
+    EXPECT_EQ(row.d.str().size(), 32u) << row.d.str();  // "0." and 30 digits: d is in (0.1, 1)
+    EXPECT_NEAR(static_cast<double>(std::stold(row.d.str()) - row.pattern.packing.d), 0, 1e-17);
   }
   for (long long n = 9; n <= 13; ++n) EXPECT_GE(rows_of_n[n], 1) << "n = " << n;
   EXPECT_LE(rows_of_n[12], 3);
   EXPECT_EQ(rows_of_n[11], 1);
   for (const auto& b : atlas.builders) {
     const auto& best = *std::find_if(atlas.rows.begin(), atlas.rows.end(),
-                                     [&](const auto& r) { return r.n == b.n; });
-    EXPECT_GE(std::stold(best.d), std::stold(b.d) * (1 - 1e-20L)) << b.member;
+                                     [&](const auto& r) { return r.n() == b.n; });
+    EXPECT_GE(std::stold(best.d.str()), std::stold(b.d) * (1 - 1e-20L)) << b.member;
   }
   // t12a = 4Delta(2): the builders of four classes and the campaign, one row.
   const auto& t12a = atlas.rows[static_cast<std::size_t>(
-      std::find_if(atlas.rows.begin(), atlas.rows.end(), [](const auto& r) { return r.n == 12; }) -
+      std::find_if(atlas.rows.begin(), atlas.rows.end(), [](const auto& r) { return r.n() == 12; }) -
       atlas.rows.begin())];
   EXPECT_EQ(t12a.label.substr(0, 4), "t12a");
-  EXPECT_NE(t12a.source.find("builder four-delta k=2"), std::string::npos) << t12a.source;
-  EXPECT_NE(t12a.source.find("billiards seed"), std::string::npos) << t12a.source;
+  EXPECT_NE(t12a.source_text().find("builder four-delta k=2"), std::string::npos)
+      << t12a.source_text();
+  EXPECT_NE(t12a.source_text().find("billiards seed"), std::string::npos) << t12a.source_text();
   // Written and read back: the same rows; every file named exists.
   campaign::write_atlas(atlas, dir / "data");
   const auto entries = campaign::read_atlas(dir / "data" / "atlas.csv");
   ASSERT_EQ(entries.size(), atlas.rows.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
     EXPECT_EQ(entries[i].label, atlas.rows[i].label);
-    EXPECT_EQ(entries[i].d, atlas.rows[i].d);
+    EXPECT_EQ(entries[i].d.str(), atlas.rows[i].d.str());
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "data" / entries[i].file));
   }
 }

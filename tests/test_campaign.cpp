@@ -141,10 +141,11 @@ TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   request.threads = 2;
   request.db = fresh_db("prune.db");
   run_campaign(request, nullptr, {});
-  std::map<long long, std::vector<RankedPacking>> before;
+  std::map<long long, std::vector<PackingRecord>> before;
+  std::map<long long, std::vector<long long>> before_ids;
   {
     const auto db = store::ResultsDb::open(request.db);
-    for (long long n = 14; n <= 17; ++n) before[n] = ranked_packings(db, n);
+    for (long long n = 14; n <= 17; ++n) before[n] = ranked_packings(db, n, &before_ids[n]);
   }
   ASSERT_GT(before[16].size(), 2u);  // something to prune (16 has several local optima)
   const PruneResult pruned = prune_database(request.db, 2, 15, 16);
@@ -153,15 +154,16 @@ TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   EXPECT_EQ(db.run_count(), 48);
   long long removed = 0;
   for (long long n = 14; n <= 17; ++n) {
-    const auto after = ranked_packings(db, n);
+    std::vector<long long> after_ids;
+    const auto after = ranked_packings(db, n, &after_ids);
     const bool in_range = n == 15 || n == 16;
     const std::size_t expected =
         in_range ? std::min<std::size_t>(2, before[n].size()) : before[n].size();
     ASSERT_EQ(after.size(), expected) << "n = " << n;
     removed += static_cast<long long>(before[n].size() - after.size());
     for (std::size_t r = 0; r < after.size(); ++r) {
-      EXPECT_EQ(after[r].packing.id, before[n][r].packing.id) << "n = " << n;
-      EXPECT_EQ(after[r].packing.points, before[n][r].packing.points);
+      EXPECT_EQ(after_ids[r], before_ids[n][r]) << "n = " << n;
+      EXPECT_EQ(after[r].pattern.packing.points, before[n][r].pattern.packing.points);
     }
   }
   EXPECT_EQ(pruned.removed, removed);

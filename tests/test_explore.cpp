@@ -43,16 +43,16 @@ const pipeline::ExploreResult& small_exploration() {
   return result;
 }
 
-double delta_of(const pipeline::ExplorePacking& r) {
-  return static_cast<double>(oler_delta(r.n, 1 / r.pattern.packing.d));
+double delta_of(const PackingRecord& r) {
+  return static_cast<double>(oler_delta(r.n(), 1 / r.pattern.packing.d));
 }
 
 TEST(Explore, DeltaOfTriangularNumbersIsZero) {
   // Oler 1961: d(Delta(k)) = 1/(k-1), so L = k - 1 = t(Delta(k)) and delta = 0.
   int seen = 0;
   for (const auto& r : small_exploration().packings)
-    if (r.source == "builder" && r.member.class_id == "hexagonal") {
-      EXPECT_NEAR(delta_of(r), 0.0, 1e-13) << r.n;  // ~100 ulps of L <= 10
+    if (r.from_builder() && r.pattern.provenance.class_id == "hexagonal") {
+      EXPECT_NEAR(delta_of(r), 0.0, 1e-13) << r.n();  // ~100 ulps of L <= 10
       EXPECT_TRUE(r.proven_optimal);
       ++seen;
     }
@@ -64,8 +64,8 @@ TEST(Explore, DeltaOfTriangularNumbersIsZero) {
 TEST(Explore, OnlyTheBestPackingOfAProvenNIsMarkedProven) {
   int at13 = 0;
   for (const auto& r : small_exploration().packings)
-    if (r.n == 13 && r.source == "builder") {
-      EXPECT_EQ(r.proven_optimal, r.member.class_id == "sparse-rows") << r.member.class_id;
+    if (r.n() == 13 && r.from_builder()) {
+      EXPECT_EQ(r.proven_optimal, r.pattern.provenance.class_id == "sparse-rows") << r.pattern.provenance.class_id;
       ++at13;
     }
   EXPECT_GE(at13, 2);
@@ -78,8 +78,8 @@ TEST(Explore, DeltaOfFourDeltaDecreasesToSqrt3MinusThreeHalvesAsOneOverK) {
   const double limit = std::sqrt(3.0) - 1.5;
   std::map<long, double> delta_by_k;
   for (const auto& r : small_exploration().packings)
-    if (r.source == "builder" && r.member.class_id == "four-delta")
-      delta_by_k[r.member.k] = delta_of(r);
+    if (r.from_builder() && r.pattern.provenance.class_id == "four-delta")
+      delta_by_k[r.pattern.provenance.k] = delta_of(r);
   ASSERT_GE(delta_by_k.size(), 5u);  // 4Delta(k) <= 60: k = 1..5
   double previous = 1e9;
   for (const auto& [k, delta] : delta_by_k) {
@@ -122,7 +122,7 @@ TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
       EXPECT_EQ(a.pattern.bonds.size(), std::stoul(f[10])) << line;
       EXPECT_EQ(a.pattern.rattlers.size(), std::stoul(f[11])) << line;
     }
-    EXPECT_EQ(f[13], row.source);
+    EXPECT_EQ(f[13], row.origin());
   }
   EXPECT_EQ(rows, result.packings.size());
   EXPECT_GT(certified, rows / 2);

@@ -1,6 +1,8 @@
 // app/pipeline: analyze(build) for every class, conventions and input validation.
 #include <gtest/gtest.h>
 
+#include "core/ranking.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -445,7 +447,7 @@ TEST(BilliardsSearch, RankingDoesNotDependOnThreads) {
   for (std::size_t i = 0; i < one.packings.size(); ++i) {
     EXPECT_EQ(one.packings[i].label, two.packings[i].label);
     EXPECT_EQ(one.packings[i].pattern.packing.d, two.packings[i].pattern.packing.d);
-    EXPECT_EQ(one.packings[i].runs, two.packings[i].runs);
+    EXPECT_EQ(one.packings[i].runs(), two.packings[i].runs());
   }
   for (std::size_t r = 0; r < one.runs.size(); ++r) EXPECT_EQ(one.runs[r].label, two.runs[r].label);
   ASSERT_FALSE(one.packings.empty());

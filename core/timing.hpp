@@ -1,9 +1,9 @@
-// Wall-clock timing of pipeline stages.
+// Wall-clock timing, the one definition every layer uses.
 #pragma once
 
 #include <chrono>
 
-namespace tripack::pipeline {
+namespace tripack {
 
 using Clock = std::chrono::steady_clock;
 
@@ -20,4 +20,4 @@ auto timed(double& seconds, F&& f) {
   return result;
 }
 
-}  // namespace tripack::pipeline
+}  // namespace tripack
