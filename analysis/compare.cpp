@@ -424,4 +424,6 @@ std::vector<int> distinct_packings(const std::vector<Pattern>& patterns,
   return ids;
 }
 
+void identify(PackingRecord& record) { record.graph_hash = contact_graph_hash(record.pattern); }
+
 }  // namespace tripack

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/packing.hpp"
+#include "core/record.hpp"
 #include "core/symmetry.hpp"
 
 namespace tripack {
@@ -42,6 +43,9 @@ Comparison compare_packings(const Pattern& a, const Pattern& b,
 // Different graphs can share it (refinement does not separate every pair), so stores key a
 // packing by (n, this hash, d) and compare_packings decides when it matters.
 std::string contact_graph_hash(const Pattern& pattern);
+
+// A record's identity (core/record.hpp): its graph_hash from its pattern.
+void identify(PackingRecord& record);
 
 // Groups patterns into classes of "the same packing" (compare_packings(...).same, default
 // position tolerance); returns a class id per input, ids 0, 1, ... in first-seen order.
