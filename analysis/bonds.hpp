@@ -1,4 +1,4 @@
-// Bonds and rattlers of a configuration (SPEC §1-§2): which near contacts are real, which disks
+// Bonds and rattlers of a configuration (docs/conventions.md-§2): which near contacts are real, which disks
 // are held, and how small the remaining gaps are.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Certificates for a packing with known bonds and rattlers (SPEC §2 step 4).
+// Certificates for a packing with known bonds and rattlers (docs/certified.md step 4).
 //
 // Rigidity: the LP test of Donev, Torquato, Stillinger & Connelly for collective jamming with
 // hard walls. With G the bond-opening map (pair: u_ij.(di - dj), wall: n.di), the packing is

@@ -1,4 +1,4 @@
-// Contact-graph comparison (SPEC §2.6): are two packings of n disks "the same packing"?
+// Contact-graph comparison (docs/certified.md): are two packings of n disks "the same packing"?
 //
 // Two packings are the same when their d agree to a relative tolerance and, after removing the
 // rattlers, one symmetry g of the triangle maps the first onto the second both geometrically

@@ -1,4 +1,4 @@
-// Exact verification of the closed-form constructions (SPEC §2.4): Delta(k), Delta(k)-1, 4Delta(k)
+// Exact verification of the closed-form constructions (docs/certified.md): Delta(k), Delta(k)-1, 4Delta(k)
 // and the twin class have every coordinate in Q(sqrt3) (Pattern::exact), so their bonds can be
 // proved to be contacts and their gaps proved open without any rounding.
 #pragma once

@@ -1,4 +1,4 @@
-// Relax: local maximization of the minimum distance from any start (SPEC §2 step 2).
+// Relax: local maximization of the minimum distance from any start (docs/certified.md step 2).
 //
 // Sequential linear programming with a trust region. At each step an LP over the displacements
 // (and the gain in d) keeps every near pair at least d + gain apart using the linearization

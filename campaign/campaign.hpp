@@ -1,4 +1,4 @@
-// Campaigns (SPEC §7, issue 11): billiards runs over many n as work units (n, seed), run on
+// Campaigns (docs/campaigns.md, issue 11): billiards runs over many n as work units (n, seed), run on
 // threads or, when the program was started by mpirun, on MPI ranks (campaign/ranks.hpp), each
 // finished unit recorded in the results database at once (store/), so rerunning the same request
 // skips every unit already recorded and an interrupted campaign loses at most the units under way.

@@ -1,4 +1,4 @@
-// The closed-form and contact-system builders, one file per class family (CONSTRUCTIONS.md).
+// The closed-form and contact-system builders, one file per class family (docs/classes.md).
 // Each returns a Pattern in the unit triangle with its intended bonds and rattlers; none of them
 // validates its arguments against the catalogue (the registry does that) beyond what geometry
 // requires.
@@ -21,7 +21,7 @@ Pattern build_twin(long k, long cavity);
 // Delta(q*block + (q-1)*separator) + (2q+1) Delta(block): a top triangle over q inverted and
 // q+1 upright small triangles, blocks separated by `separator` (0 or 1) rattlers. The matrix
 // class n_p(k) is (q, block, separator) = (p, k, 1); Delta(k+2)-2 is (k, 1, 0); Delta(2k+3)-3
-// is (k, 2, 0). CONSTRUCTIONS.md §4b, §5-6.
+// is (k, 2, 0). docs/classes.md §4b, §5-6.
 struct ChainFamilyShape {
   long q = 1;
   long block = 1;
@@ -29,7 +29,7 @@ struct ChainFamilyShape {
 };
 Pattern build_chain_family(const ChainFamilyShape& shape);
 
-// Delta(2k+1) + 1 with the depressed cage (CONSTRUCTIONS.md §7), k >= 3.
+// Delta(2k+1) + 1 with the depressed cage (docs/classes.md §7), k >= 3.
 Pattern build_odd_ripple_depressed(long k);
 // Delta(2k+1) + 1, the other modification (docs/odd-ripple-other.md: t16a33, t29a, t46a, t67b,
 // t92b), k >= 2.

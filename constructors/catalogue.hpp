@@ -1,4 +1,4 @@
-// The catalogue of classes, read from classes.yaml (the single source of truth, SPEC §3).
+// The catalogue of classes, read from classes.yaml (the single source of truth, docs/classes.md).
 #pragma once
 
 #include <map>

@@ -60,7 +60,7 @@ RippleChain solve_ripple_chain(int q, int step) {
   c.floor.assign(static_cast<std::size_t>(q + 1), {});
   c.raised.assign(static_cast<std::size_t>(q), {});
 
-  // The physical root is the largest X < 1 (CONSTRUCTIONS §4a), and f = F_0.x grows with X. For
+  // The physical root is the largest X < 1 (docs/classes.md §4a), and f = F_0.x grows with X. For
   // long chains (step 2, q >= ~250) the march from the axis cannot even be completed slightly
   // above the root (some floor disk ends more than 2 from its anchor): that side counts as
   // f > 0, and bisection then closes in on the root from both sides.

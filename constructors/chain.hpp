@@ -1,5 +1,5 @@
 // The "ripple chain": the one-unknown problem behind the matrix class (anchor step 2) and the
-// sparse-rows / pairs classes (anchor step 1), CONSTRUCTIONS.md §4a and §5-6.
+// sparse-rows / pairs classes (anchor step 1), docs/classes.md §4a and §5-6.
 //
 // Disk units. A top hexagonal triangle hangs from the apex; its anchors are
 // A_i = (X + step*i, sqrt3*X), i = 0..q-1, and the side is L = (q-1)*step + 2X. Below, raised

@@ -1,4 +1,4 @@
-// Classes 4-6 in one construction (CONSTRUCTIONS.md §4b, §5-6): a top hexagonal triangle over a
+// Classes 4-6 in one construction (docs/classes.md §4b, §5-6): a top hexagonal triangle over a
 // row of q inverted and q+1 upright small triangles, positioned by the compressed ripple chain.
 #include <stdexcept>
 

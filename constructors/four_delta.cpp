@@ -1,4 +1,4 @@
-// Class 2: 4 Delta(k), L = 2k - 2 + sqrt3 (CONSTRUCTIONS.md §2). Every coordinate is exact in
+// Class 2: 4 Delta(k), L = 2k - 2 + sqrt3 (docs/classes.md §2). Every coordinate is exact in
 // Q(sqrt3); the long double ones are derived from the exact ones.
 #include <stdexcept>
 

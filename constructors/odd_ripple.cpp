@@ -1,4 +1,4 @@
-// Class 7: Delta(2k+1) + 1, the non-symmetric ripple with a depressed cage (CONSTRUCTIONS.md §7).
+// Class 7: Delta(2k+1) + 1, the non-symmetric ripple with a depressed cage (docs/classes.md §7).
 //
 // Disk units. The top Delta(2k) hangs from the apex with sites S(i, j) = (L/2 - i/2 + j,
 // (L - i) sqrt3/2). Its row 2k-2 has free disks B1 (j=1), B2 (j=2); its bottom ("anchor") row
@@ -372,7 +372,7 @@ Pattern build_odd_ripple_depressed(long k) {
   for (long j = 2; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
   f.keep_lattice_except({{a1, c.a1}, {a3, c.a3}, {b1, c.b1}, {b2, c.b2}}, rattlers);
   f.add_chain(c.floor, c.raised);
-  // The contacts of the depressed cage (CONSTRUCTIONS.md §7).
+  // The contacts of the depressed cage (docs/classes.md §7).
   const int r0 = f.raised_disk(0), r1 = f.raised_disk(1), f1 = f.floor_disk(1);
   const int cage[][2] = {
       {r0, a0},          {r0, a1}, {f1, a1},          {a1, a0}, {a1, b1},  // the depressed disk A1

@@ -1,5 +1,5 @@
 // Class 3: 2Delta(k+1) + 2Delta(k) - 1, L = 2k - 1 + sqrt3, k+1 packings with the same d
-// (CONSTRUCTIONS.md §3): the rattler packing, k-1 cavity packings and the full packing. Every
+// (docs/classes.md §3): the rattler packing, k-1 cavity packings and the full packing. Every
 // coordinate but the rattler's is exact in Q(sqrt3); the long double ones derive from them.
 #include <cmath>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 //
 // Two coordinate systems appear in tripack:
 //  * unit-triangle coordinates: vertices (0,0), (1,0), (1/2, sqrt3/2); a Packing lives here and its
-//    minimum distance is d (SPEC §1);
+//    minimum distance is d (docs/conventions.md);
 //  * disk units: minimum distance 1 and triangle side L = 1/d; builders and the polisher work here
 //    because bond equations are then |xi - xj| = 1.
 #pragma once

@@ -356,7 +356,7 @@ Scanned scan(std::istream& in, char separator) {
       std::string f;
       while (std::getline(cells, f, separator)) {
         auto v = trim(f);
-        // Quoted fields: high-precision numbers travel as strings in CSV (SPEC §9).
+        // Quoted fields: high-precision numbers travel as strings in CSV (docs/formats.md).
         if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
         row.fields.emplace_back(v);
       }

@@ -17,7 +17,7 @@
 
 namespace tripack {
 
-// Records: "i x y" lines with a "#" header (the record tables' layout, SPEC §9).
+// Records: "i x y" lines with a "#" header (the record tables' layout, docs/formats.md).
 enum class FileFormat { Text, Csv, Json, Records };
 
 // Chosen by extension: .csv -> CSV, .json -> JSON, .pck and .records -> records, anything else
@@ -30,7 +30,7 @@ struct InputError : std::runtime_error {
 };
 
 // How the writers below lay out the coordinates. The defaults give the unit-triangle files
-// tripack always wrote. In another convention (SPEC §1) the coordinates are converted by
+// tripack always wrote. In another convention (docs/conventions.md) the coordinates are converted by
 // point_in_convention and the file says so: a "# convention: NAME (...)" comment line (JSON:
 // "convention"), which read_points reports and packing_from_points follows. d stays the
 // unit-triangle d in every convention (r and S are given beside it).

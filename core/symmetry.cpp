@@ -76,7 +76,7 @@ Vec2L apply(Symmetry g, const Vec2L& p) {
 }
 
 Side apply(Symmetry g, Side s) {
-  // Rows: the images of Bottom, Left, Right (CONSTRUCTIONS.md vertex order (0,0), (1,0), apex).
+  // Rows: the images of Bottom, Left, Right (docs/classes.md vertex order (0,0), (1,0), apex).
   static constexpr Side kImage[6][3] = {
       {Side::Bottom, Side::Left, Side::Right},  // identity
       {Side::Right, Side::Bottom, Side::Left},  // rotate-120: (0,0) -> (1,0) -> apex

@@ -1,4 +1,4 @@
-// "Accuracy costs time" as data (SPEC §6): how many correct digits of d billiards alone reaches,
+// "Accuracy costs time" as data (docs/accuracy.md): how many correct digits of d billiards alone reaches,
 // and at what cost, against the polishers (long double, MPFR); and the hard cases that must stay
 // stable (tight cages, near contacts, near-equal gaps, large n, near-degenerate contacts, corner
 // disks, two packings of 33 disks 1e-8 apart). Returns results; prints nothing.
@@ -28,7 +28,7 @@ struct AccuracyRow {
 
 struct HardCase {
   std::string name;      // "t33c tight cage", ...
-  std::string what;      // one line: what makes it hard (from SPEC §6)
+  std::string what;      // one line: what makes it hard (from docs/accuracy.md)
   bool stable = false;   // the pipeline gives the same d, bonds, rattlers and verdict every time
   std::string evidence;  // one line: how we know (e.g. "5 perturbed starts (1e-9 d): same d to
                          // 1e-15, 62 bonds, 1 rattler, certified")

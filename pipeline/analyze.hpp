@@ -1,4 +1,4 @@
-// The analysis pipeline (SPEC §2): relax -> bonds (+ polish) -> rattlers -> rigidity -> stress
+// The analysis pipeline (docs/certified.md): relax -> bonds (+ polish) -> rattlers -> rigidity -> stress
 // -> optional multiprecision, with the time of each stage. `build`, `analyze` and the billiards
 // search all use it.
 #pragma once

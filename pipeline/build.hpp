@@ -1,4 +1,4 @@
-// Build + polish + certify a class member (SPEC §2 steps 1-4), and the catalogue's best member
+// Build + polish + certify a class member (docs/certified.md steps 1-4), and the catalogue's best member
 // for a given n. Returns results; prints nothing.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Constructed vs billiards for one n (SPEC §2 step 6): the catalogue's best builder against the
+// Constructed vs billiards for one n (docs/certified.md step 6): the catalogue's best builder against the
 // best packing a billiards search finds: d difference, bonds, rattlers, and whether the contact
 // graphs agree up to the triangle's 6 symmetries.
 #pragma once

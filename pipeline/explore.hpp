@@ -29,7 +29,7 @@ struct ExploreSettings {
   int large_runs = 8;  // per n of the stress set (slower growth: ~1 s a run at n = 254)
   int threads = 2;
   std::uint64_t seed = 1;
-  bool accuracy = true;  // the accuracy-against-time study and the hard cases (SPEC §6)
+  bool accuracy = true;  // the accuracy-against-time study and the hard cases (docs/accuracy.md)
 };
 
 // One row of compare.csv.

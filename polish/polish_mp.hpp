@@ -51,11 +51,11 @@ double centre_rattlers_multiprecision(MultiprecisionPolish& polish,
                                       const std::vector<int>& rattlers);
 
 // The radius r = d / (2 (1 + sqrt3 d)) (radius = true) or the side S = 2/d + 2 sqrt3 (false) of
-// SPEC §1 from a decimal d, to `digits` significant digits in MPFR: a d polished to 50 digits
+// docs/conventions.md from a decimal d, to `digits` significant digits in MPFR: a d polished to 50 digits
 // keeps its 50 digits in the user's convention.
 std::string radius_or_side_from_d(const std::string& d, bool radius, int digits);
 
-// delta(n) = L - t(n), Oler's bound t(n) = (-3 + sqrt(8n + 1)) / 2 (SPEC §1), from a decimal L
+// delta(n) = L - t(n), Oler's bound t(n) = (-3 + sqrt(8n + 1)) / 2 (docs/conventions.md), from a decimal L
 // (a multiprecision polish's), in MPFR, with as many decimals as L has: delta is known to L's
 // absolute accuracy, not to L's number of significant digits.
 std::string oler_delta_from_L(const std::string& L, long long n);

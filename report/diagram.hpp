@@ -1,4 +1,4 @@
-// Packing diagrams drawn like Graham & Lubachevsky's figures (SPEC §9): the container triangle,
+// Packing diagrams drawn like Graham & Lubachevsky's figures (docs/formats.md): the container triangle,
 // shaded disks, unshaded rattlers, a dot at every bond (disk-disk and disk-wall), disk indices,
 // and a caption with the label and d. Optionally the stress certificate's bond forces as line
 // widths, which shows why the packing is locally optimal.

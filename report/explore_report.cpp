@@ -143,7 +143,7 @@ std::string accuracy_csv(const AccuracyStudy& study) {
     out << fmt::format("{},{},{},{},{:.6g},{},{}\n", r.n, csv_field(r.label), csv_field(r.method),
                        csv_field(r.target), r.seconds,
                        std::isfinite(r.digits) ? fmt::format("{:.2f}", r.digits) : "", r.reference);
-  out << "\n# hard cases (SPEC section 6): name,stable,what,evidence\n";
+  out << "\n# hard cases (docs/accuracy.md): name,stable,what,evidence\n";
   for (const auto& h : study.hard_cases)
     out << fmt::format("# {},{},{},{}\n", csv_field(h.name), h.stable, csv_field(h.what),
                        csv_field(h.evidence));

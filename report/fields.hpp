@@ -1,5 +1,5 @@
 // What every renderer shares: high-precision numbers as 17-digit decimal strings (a double
-// round-trips; SPEC §9), RFC 4180 CSV quoting (core/io.hpp csv_field), and writing a file whole
+// round-trips; docs/formats.md), RFC 4180 CSV quoting (core/io.hpp csv_field), and writing a file whole
 // or failing in one line.
 #pragma once
 

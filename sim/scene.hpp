@@ -1,4 +1,4 @@
-// Billiards scenes (SPEC §5): the container, the number of disks, the initial state and the effects
+// Billiards scenes (docs/billiards.md): the container, the number of disks, the initial state and the effects
 // a run needs. A scene is plain data; sim/billiards.hpp runs it.
 //
 // YAML form (every key but n optional):

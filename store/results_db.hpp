@@ -1,4 +1,4 @@
-// The campaign results database (SPEC §7, issue 11): SQLite in WAL mode. Every finished work
+// The campaign results database (docs/campaigns.md, issue 11): SQLite in WAL mode. Every finished work
 // unit (n, seed) is one transaction (BEGIN IMMEDIATE) holding the run and, when new for its n,
 // the packing it found; so a killed campaign loses at most the unit it was running, and a rerun
 // skips every unit already recorded. Errors are StoreError with one line naming the file.

@@ -102,7 +102,7 @@ expect_output "analyze t22a" "certified: rigid with a strictly positive stress" 
 expect_output "analyze t22a rattlers" '"rattler_indices":[8,13]' analyze "$tmp/t22a.csv" --json
 rm -rf "$tmp"
 
-# CONSTRUCTIONS: d(22) = 5 sqrt3/(20 sqrt3 + 7 + 2 sqrt11) = 0.17939690861186597956121884705073659574141764618876
+# docs/classes.md: d(22) = 5 sqrt3/(20 sqrt3 + 7 + 2 sqrt11) = 0.17939690861186597956121884705073659574141764618876
 # to 50 digits (mpmath); build --n 22 --digits 50 prints all of them.
 expect_output "build --n 22 --digits 50" "0.17939690861186597956121884705073659574141764618876" build --n 22 --digits 50
 
@@ -142,7 +142,7 @@ for f in t22a.xy.txt t22a.xyr.txt t22a.ixy.txt t22a.header.csv t22a.points.json 
 done
 expect_output "x y r implies the radius convention" '"convention":"radius"' analyze "$LAYOUTS/t22a.xyr.txt" --json
 expect_output "i x y layout named" '"layout":"i x y"' analyze "$LAYOUTS/t22a.ixy.txt" --json
-# r = d / (2 (1 + sqrt3 d)) of d(22) to 40 digits (mpmath from the closed form in CONSTRUCTIONS):
+# r = d / (2 (1 + sqrt3 d)) of d(22) to 40 digits (mpmath from the closed form in docs/classes.md):
 # 0.06843425156850538244567369271218...; --digits 30 carries it through MPFR.
 expect_output "r with --digits 30" "r          0.0684342515685053824456736927122" analyze "$LAYOUTS/t22a.xyr.txt" --digits 30
 

@@ -1,4 +1,4 @@
-// pipeline/accuracy: digits of d against time (SPEC §6) and the hard cases' stability.
+// pipeline/accuracy: digits of d against time (docs/accuracy.md) and the hard cases' stability.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 namespace tripack::pipeline {
 namespace {
 
-// d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) (CONSTRUCTIONS.md), 50 digits.
+// d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) (docs/classes.md), 50 digits.
 const std::string kD22 = "0.17939690861186597956121884705073659574141764618876";
 
 const Catalogue& catalogue() {

@@ -133,7 +133,7 @@ TEST(Stress, NoBalanceWithoutSideWalls) {
 }
 
 TEST(HardCases, SparseRowsNearDegenerateContactsPolishAndReportTheirGaps) {
-  // CONSTRUCTIONS §5-6: smallest raised spacing - 1 = 9.4e-3, 1.5e-3, 1.2e-4, 3.1e-6, 1.9e-8 for
+  // docs/classes.md §5-6: smallest raised spacing - 1 = 9.4e-3, 1.5e-3, 1.2e-4, 3.1e-6, 1.9e-8 for
   // k = 8..12 (two printed digits), next to contacts that degenerate super-exponentially. From a
   // 1e-12 perturbation the polish converges (no divergence) and the gaps come out right.
   const long double expected[] = {9.4e-3L, 1.5e-3L, 1.2e-4L, 3.1e-6L, 1.9e-8L};

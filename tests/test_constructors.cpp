@@ -1,5 +1,5 @@
 // constructors/: every builder, through the catalogue's registry, against the paper's values,
-// the closed forms of CONSTRUCTIONS.md and the geometry itself.
+// the closed forms of docs/classes.md and the geometry itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,7 +134,7 @@ TEST(Matrix, PapersD22AndD79) {
       EXPECT_EQ(pat.rattlers.size(), c.rattlers) << id << " p=" << c.p;
     }
   }
-  // CONSTRUCTIONS: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11), exactly.
+  // docs/classes.md: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11), exactly.
   const long double s3 = std::sqrt(3.0L), s11 = std::sqrt(11.0L);
   EXPECT_LT(rel(build("even-ripple", 3).packing.d, 5 * s3 / (20 * s3 + 7 + 2 * s11)), 1e-17);
 }
@@ -161,7 +161,7 @@ TEST(Twin, PapersBondCounts) {
 }
 
 TEST(Classes, ClosedFormsOfConstructions) {
-  // CONSTRUCTIONS "Closed forms that follow": d(11) = (3 - sqrt6)/2, d(8) = (sqrt33 - 3)/8,
+  // docs/classes.md "Closed forms that follow": d(11) = (3 - sqrt6)/2, d(8) = (sqrt33 - 3)/8,
   // d(13) = 3/(6 + sqrt6 + 2 sqrt3), d(25) = 1/(4 + sqrt(11/3)), d(42) = 3/(18 + sqrt6 + 2 sqrt3).
   // The polished d carries long double accuracy; 1e-17 leaves a factor ~100 over its rounding.
   const long double s3 = std::sqrt(3.0L), s6 = std::sqrt(6.0L);
@@ -170,7 +170,7 @@ TEST(Classes, ClosedFormsOfConstructions) {
   EXPECT_LT(rel(build("sparse-rows", 3).packing.d, 3 / (6 + s6 + 2 * s3)), 1e-17);
   EXPECT_LT(rel(build("pairs", 2).packing.d, 1 / (4 + std::sqrt(11.0L / 3))), 1e-17);
   EXPECT_LT(rel(build("pairs", 3).packing.d, 3 / (18 + s6 + 2 * s3)), 1e-17);
-  // t8a has 18 bonds (CONSTRUCTIONS §5-6); pairs: 30, 63, 108, 165 bonds for n = 12, 25, 42, 63.
+  // t8a has 18 bonds (docs/classes.md §5-6); pairs: 30, 63, 108, 165 bonds for n = 12, 25, 42, 63.
   EXPECT_EQ(build("sparse-rows", 2).bonds.size(), 18u);
   for (long k = 1; k <= 4; ++k)
     EXPECT_EQ(build("pairs", k).bonds.size(),
@@ -178,7 +178,7 @@ TEST(Classes, ClosedFormsOfConstructions) {
 }
 
 TEST(Matrix, CompressionLemma) {
-  // CONSTRUCTIONS §4b: L(n_p(k)) = L(Delta(2p)+1) + (p+1)(k-1), with both sides polished
+  // docs/classes.md §4b: L(n_p(k)) = L(Delta(2p)+1) + (p+1)(k-1), with both sides polished
   // independently; rounding of two long double polishes, 1e-17 relative.
   for (long p = 1; p <= 6; ++p) {
     const long double lambda = 1 / build("even-ripple", p).packing.d;
@@ -211,7 +211,7 @@ TEST(OddRipple, PapersDepressedCagePackings) {
     EXPECT_EQ(pat.bonds.size(), bonds[static_cast<std::size_t>(k - 3)]) << k;
     EXPECT_EQ(pat.rattlers.size(), static_cast<std::size_t>(k - 1)) << k;
   }
-  // The printed d(121) is one unit high in its 15th significant digit (CONSTRUCTIONS §8.3: the
+  // The printed d(121) is one unit high in its 15th significant digit (docs/classes.md §8.3: the
   // exact construction gives 0.06916301888946975...): allow 1.5 units of that digit.
   EXPECT_NEAR(build("odd-ripple", 7).packing.d, 0.0691630188894699L, 1.5e-16L);
 }
@@ -354,7 +354,7 @@ TEST(Classes, RecordedBondsAreExactlyTheGeometricContacts) {
 }
 
 TEST(SparseRows, NearDegenerateGapsAreNotBonds) {
-  // CONSTRUCTIONS §5-6: the closest raised pair is 1 + 3.1e-6 apart at k = 11 and 1 + 1.9e-8 at
+  // docs/classes.md §5-6: the closest raised pair is 1 + 3.1e-6 apart at k = 11 and 1 + 1.9e-8 at
   // k = 12 (two printed digits). Other contacts degenerate faster (we measure the corner floor
   // pair F0-F1 at 2.6e-11 and 9e-16, k = 11, 12). The pattern stays valid with exactly the
   // formula's bonds, and every non-bond gap stays positive.

@@ -1,5 +1,5 @@
 // analysis/exact_check and the builders' exact Q(sqrt3) coordinates (Pattern::exact): the closed
-// forms of CONSTRUCTIONS.md §1-§3 verified without rounding.
+// forms of docs/classes.md §1-§3 verified without rounding.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,7 +40,7 @@ void expect_exact_ok(const Pattern& pat, std::size_t bonds, const std::string& w
 
 TEST(ExactCheck, FourDeltaKUpTo20) {
   // GL1995 Sec.5: d(4Delta(k)) = 1/(2k - 2 + sqrt3), so L = (p + q sqrt3)/2 with p = 4k - 4,
-  // q = 2, exactly; bonds 6k^2 + 3k (CONSTRUCTIONS §2; paper: t24a 63, t40a 108).
+  // q = 2, exactly; bonds 6k^2 + 3k (docs/classes.md §2; paper: t24a 63, t40a 108).
   for (long k = 1; k <= 20; ++k) {
     const Pattern pat = build_four_delta(k);
     ASSERT_TRUE(pat.exact.has_value()) << k;
@@ -53,7 +53,7 @@ TEST(ExactCheck, FourDeltaKUpTo20) {
 }
 
 TEST(ExactCheck, TwinEveryVariant) {
-  // GL1995 Sec.5 / CONSTRUCTIONS §3: L = 2k - 1 + sqrt3 for all k+1 packings. Bonds: rattler
+  // GL1995 Sec.5 / docs/classes.md §3: L = 2k - 1 + sqrt3 for all k+1 packings. Bonds: rattler
   // 6k^2 + 9k - 2 (t7a13, t17a40, t31a79), cavity-m 6k^2 + 9k (t31a81.1, .2), full 6k^2 + 9k + 1
   // (t7a16, t17a43, t31a82).
   for (long k = 1; k <= 6; ++k) {
@@ -80,7 +80,7 @@ TEST(ExactCheck, TwinEveryVariant) {
 }
 
 TEST(ExactCheck, HexagonalAndMinusOne) {
-  // Oler 1961: L(Delta(k)) = k - 1, 3k(k-1)/2 disk bonds and 3k wall bonds (CONSTRUCTIONS §1).
+  // Oler 1961: L(Delta(k)) = k - 1, 3k(k-1)/2 disk bonds and 3k wall bonds (docs/classes.md §1).
   // Delta(k) - 1 loses the corner's 2 disk bonds and 2 wall bonds.
   for (long k = 2; k <= 12; ++k) {
     const Pattern full = build_hexagonal(k);

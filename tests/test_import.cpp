@@ -192,7 +192,7 @@ TEST(Import, EveryFormatAndConventionReadsBackToTheSamePoints) {
 TEST(Import, BuiltClassMembersCertifyWithTheirClosedFormD) {
   const std::string db = fresh_db("built.db");
   // Oler 1961 (classes.yaml, hexagonal): d(Delta(k)) = 1/(k-1); Delta(6) = 21, Delta(10) = 55.
-  // CONSTRUCTIONS (classes.yaml, even-ripple k = 3): d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
+  // docs/classes.md (classes.yaml, even-ripple k = 3): d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
   const long double sqrt3 = std::sqrt(3.0L);
   struct Case {
     std::string class_id;

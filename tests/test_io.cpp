@@ -105,7 +105,7 @@ TEST(Io, RecordsRoundTripAndHeader) {
     EXPECT_NE(text.find(line), std::string::npos) << line << " missing in\n" << text;
   EXPECT_NE(text.find("# d: " + format_significant(sample().packing.d, 21) + "\n"),
             std::string::npos);
-  // r and S of d (SPEC section 1), L = 1/d.
+  // r and S of d (docs/conventions.md), L = 1/d.
   EXPECT_EQ(table.r, format_significant(radius_from_d(sample().packing.d), 21));
   EXPECT_EQ(table.S, format_significant(side_from_d(sample().packing.d), 21));
   EXPECT_EQ(table.L, format_significant(1 / sample().packing.d, 21));
@@ -174,7 +174,7 @@ TEST(Io, EveryLayoutReadsTheSame22Points) {
   }
 
   // Radius convention: circles of radius r in the side-1 triangle; their centres fill the
-  // triangle inset by r: corner (sqrt3 r, r), side 1 - 2 sqrt3 r (SPEC section 1).
+  // triangle inset by r: corner (sqrt3 r, r), side 1 - 2 sqrt3 r (docs/conventions.md).
   const PointsFile xyr = read_points_file(layout_file("t22a.xyr.txt"));
   EXPECT_EQ(xyr.layout, "x y r");
   ASSERT_TRUE(xyr.radius);

@@ -1,4 +1,4 @@
-// The layers' arrows (SPEC §8): core <- polish <- {constructors, analysis}; core <- sim; those <-
+// The layers' arrows (docs/architecture.md): core <- polish <- {constructors, analysis}; core <- sim; those <-
 // pipeline <- store <- campaign <- report <- app (a campaign records its units in the store; the
 // report renders the campaign's and the database commands' results). Every #include "dir/..." of
 // a source file must name its own layer or one below it; tests/ and bench/ may include anything.

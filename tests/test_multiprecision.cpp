@@ -45,7 +45,7 @@ std::string decimal(const Num& v, int digits) {
   return "0." + s;
 }
 
-// CONSTRUCTIONS.md "closed forms": d(t22a) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
+// docs/classes.md "closed forms": d(t22a) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
 void t22a_closed_form(Num& d, int digits) {
   Num s3(digits), s11(digits), den(digits);
   mpfr_sqrt_ui(s3.v, 3, MPFR_RNDN);

@@ -225,7 +225,7 @@ TEST(Pipeline, RandomPointsGetAVerdictNotAnLPFailure) {
 }
 
 TEST(Pipeline, MultiprecisionDigits) {
-  // CONSTRUCTIONS: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) =
+  // docs/classes.md: d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) =
   // 0.17939690861186597956121884705073659574141764618876... (50 digits, mpmath).
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 3, 0, ""});
   AnalysisOptions fifty;
@@ -238,7 +238,7 @@ TEST(Pipeline, ConventionsMapBackToTheUnitTriangle) {
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 3, 0, ""});
   const long double d = built.packing.d;
   // Radius convention: circles of radius r in the side-1 container; their centres fill the
-  // triangle inset by r: offset (sqrt3 r, r), side 1 - 2 sqrt3 r (SPEC §1).
+  // triangle inset by r: offset (sqrt3 r, r), side 1 - 2 sqrt3 r (docs/conventions.md).
   const long double r = radius_from_d(d);
   std::vector<Vec2L> circles;
   for (const auto& p : built.packing.points)

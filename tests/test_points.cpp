@@ -12,7 +12,7 @@
 namespace tripack {
 namespace {
 
-// d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) (CONSTRUCTIONS; 40 digits, mpmath).
+// d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) (docs/classes.md; 40 digits, mpmath).
 constexpr long double kD22 = 0.1793969086118659795612188470507365957414L;
 
 // How close d comes to kD22 depends on the digits the file carries:

@@ -63,7 +63,7 @@ def main():
     unit = "convention: unit-triangle (centres in the triangle (0,0) (1,0) (1/2,sqrt3/2))"
 
     # Radius convention: circles of radius r in the side-1 triangle; their centres fill the
-    # triangle inset by r: corner (sqrt3 r, r), side 1 - 2 sqrt3 r (SPEC section 1).
+    # triangle inset by r: corner (sqrt3 r, r), side 1 - 2 sqrt3 r (docs/conventions.md).
     r = d / (2 * (1 + SQRT3 * d))
     inset = 1 - 2 * SQRT3 * r
     circles = [(SQRT3 * r + x * inset, r + y * inset) for x, y in pts]
