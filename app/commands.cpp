@@ -24,6 +24,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/import.hpp"
 #include "campaign/stored.hpp"
+#include "core/formats.hpp"
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"
@@ -186,18 +187,25 @@ std::filesystem::path writable_directory(const std::string& name) {
 
 // -o DIR is checked before the runs (a search must not end in an unwritable directory).
 std::filesystem::path prepare_output_dir(const BilliardsCommandOptions& o) {
-  if (o.file_format != "txt" && o.file_format != "csv" && o.file_format != "json" &&
-      o.file_format != "pck")
-    throw std::invalid_argument("--format must be txt, csv, json or pck, not '" + o.file_format +
-                                "'");
+  if (!find_format(o.file_format))
+    throw std::invalid_argument("--format must be one of " + format_names() + ", not '" +
+                                o.file_format + "'");
   return writable_directory(o.output_dir);
 }
 
 void write_distinct_packings(const pipeline::BilliardsSearchResult& result,
-                             const std::filesystem::path& dir, const std::string& extension) {
+                             const std::filesystem::path& dir, const std::string& format) {
+  const std::string extension = find_format(format)->extensions.front();
   for (const auto& x : result.packings)
-    report::write_packing_file((dir / (x.label + "." + extension)).string(), x.pattern, 17, nullptr,
-                               x.label);
+    write_packing_file((dir / (x.label + extension)).string(), x, WriteOptions{});
+}
+
+// -o FILE of build and analyze: the format by extension, the coordinates with --digits
+// significant digits (never fewer than a long double's round trip, so no file is rounded).
+WriteOptions file_digits(int digits) {
+  WriteOptions options;
+  options.digits = options.d_digits = std::max(digits, kLongDoubleRoundTripDigits);
+  return options;
 }
 
 // The diagrams asked for with --svg/--png/--pdf.
@@ -244,16 +252,10 @@ int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
   }
   progress.finish();
   print_result(result, o.out);
-  if (!o.output.empty()) {
-    const auto& b = result.best;
-    const auto* mp = b.analysis && b.analysis->multiprecision ? &*b.analysis->multiprecision
-                     : b.multiprecision                       ? &*b.multiprecision
-                                                              : nullptr;
-    report::write_packing_file(o.output, b.pattern, o.digits, mp);
-  }
-  const auto& b = result.best;
-  draw_if_asked(o.diagrams, b.analysis ? b.analysis->pattern : b.pattern,
-                pipeline::member_name(b.pattern.provenance), forces_of(b.analysis));
+  const PackingRecord& built = result.best.record;
+  if (!o.output.empty()) write_packing_file(o.output, built, file_digits(o.digits));
+  draw_if_asked(o.diagrams, built.pattern, pipeline::member_name(built.pattern.provenance),
+                built.forces);
   return 0;
 }
 
@@ -290,10 +292,8 @@ int cmd_analyze(const AnalyzeOptions& o) {
   progress.finish();
   for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
   print_result(result, o.out);
-  if (!o.output.empty()) {
-    const auto& mp = result.analysis.multiprecision;
-    report::write_packing_file(o.output, result.analysis.pattern, o.digits, mp ? &*mp : nullptr);
-  }
+  if (!o.output.empty())
+    write_packing_file(o.output, pipeline::record_of(result.analysis), file_digits(o.digits));
   draw_if_asked(o.diagrams, result.analysis.pattern,
                 std::filesystem::path(o.file).filename().string(), result.analysis.stress.forces);
   return 0;
@@ -579,36 +579,37 @@ Convention convention_option(const std::string& name) {
   return *c;
 }
 
-// The format of a known extension (.txt, .csv, .json, .pck, .records), if the path has one.
-std::optional<FileFormat> format_of_extension(const std::string& path) {
+// The format a path's extension names, if it names one.
+const PackingFormat* format_of_extension(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".txt" || ext == ".csv" || ext == ".json" || ext == ".pck" || ext == ".records")
-    return format_from_path(path);
-  return std::nullopt;
+  for (const auto& f : packing_formats())
+    for (const auto& e : f.extensions)
+      if (e == ext) return &f;
+  return nullptr;
 }
 
 }  // namespace
 
 int cmd_db_export(const DbExportOptions& o) {
   // Everything the command line decides is checked before the database is read.
-  std::optional<FileFormat> format;
+  const PackingFormat* format = nullptr;
   if (!o.format.empty()) {
-    format = report::parse_file_format(o.format);
+    format = find_format(o.format);
     if (!format)
-      throw std::invalid_argument("--format must be txt, csv, json or records, not '" + o.format +
-                                  "'");
+      throw std::invalid_argument("--format must be one of " + format_names() + ", not '" +
+                                  o.format + "'");
   }
   const Convention convention = convention_option(o.convention);
   const bool into_directory =
       !o.output.empty() && (o.all || std::filesystem::is_directory(o.output));
   if (!o.output.empty() && !into_directory) {
-    const auto named = format_of_extension(o.output);
-    if (format && named && *format != *named)
+    const auto* named = format_of_extension(o.output);
+    if (format && named && format != named)
       throw std::invalid_argument("-o " + o.output + " names another format than --format " +
                                   o.format);
     if (!format) format = named;
   }
-  const FileFormat chosen = format.value_or(FileFormat::Text);
+  const PackingFormat& chosen = format ? *format : packing_formats().front();
   const auto selected = campaign::select_packings(o.db, o.n, o.rank, o.all);
   auto write_options = [&](const PackingRecord& r) {
     WriteOptions w;
@@ -621,12 +622,11 @@ int cmd_db_export(const DbExportOptions& o) {
   if (o.output.empty()) {
     // Rendered whole before printing. Several packings follow one another (JSON: an array).
     std::ostringstream buffer;
-    const bool array = chosen == FileFormat::Json && selected.size() > 1;
+    const bool array = chosen.name == "json" && selected.size() > 1;
     if (array) buffer << "[\n";
     for (std::size_t i = 0; i < selected.size(); ++i) {
       if (i > 0) buffer << (array ? ",\n" : "\n");
-      report::write_packing(buffer, selected[i].pattern, chosen,
-                            write_options(selected[i]));
+      chosen.write(buffer, selected[i], write_options(selected[i]));
     }
     if (array) buffer << "]\n";
     std::cout << buffer.str() << std::flush;
@@ -635,10 +635,10 @@ int cmd_db_export(const DbExportOptions& o) {
   const auto dir = into_directory ? writable_directory(o.output) : std::filesystem::path();
   for (const auto& r : selected) {
     const std::filesystem::path path = into_directory
-                                           ? dir / (r.label + report::file_extension(chosen))
+                                           ? dir / (r.label + chosen.extensions.front())
                                            : std::filesystem::path(o.output);
     std::ostringstream bytes;
-    report::write_packing(bytes, r.pattern, chosen, write_options(r));
+    chosen.write(bytes, r, write_options(r));
     report::write_file(path, bytes.str());
     std::cout << path.string() << "\n";
   }

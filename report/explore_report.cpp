@@ -200,8 +200,8 @@ bool forces_drawn(const PackingRecord& r) {
 }
 
 // One raster per diagram (the report's size: an SVG and a PNG of each of ~860 packings weighed
-// ~200 MB, mostly the SVGs' glyphs): PNGs at 1.6x the page's 220 px, forces at 2x.
-constexpr int kDiagramPixels = 360;
+// ~200 MB, mostly the SVGs' glyphs): PNGs at 1.5x the page's 220 px, forces at 2x.
+constexpr int kDiagramPixels = 330;
 constexpr int kForcesPixels = 440;
 
 std::string atlas_diagram(const PackingRecord& e) {
