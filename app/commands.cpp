@@ -24,7 +24,7 @@
 #include "campaign/campaign.hpp"
 #include "campaign/import.hpp"
 #include "campaign/stored.hpp"
-#include "core/formats.hpp"
+#include "report/formats.hpp"
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/billiards_search.hpp"

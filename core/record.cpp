@@ -36,7 +36,9 @@ std::string PackingRecord::origin() const {
   return "billiards";
 }
 
-std::string identity_d_key(long double d) { return format_significant(d, kIdentityDigits); }
+std::string identity_d_key(long double d) {
+  return format_significant(d, kIdentityDigits);
+}
 
 bool same_packing(const IdentityFields& a, const IdentityFields& b) {
   if (a.n != b.n || a.graph_hash != b.graph_hash) return false;

@@ -51,13 +51,13 @@ struct PackingRecord {
   std::vector<long double> forces;  // the stress certificate's, per bond
   std::string graph_hash;           // identity (analysis/identity.hpp fills it)
   std::vector<PackingSource> sources;
-  std::string label;      // among the packings of its n (core/ranking.hpp): t22a, t17a40, ...
-  std::size_t rank = 0;   // 1 = the best of its n in its list
-  double seconds = 0;     // what finding and certifying it cost
+  std::string label;     // among the packings of its n (core/ranking.hpp): t22a, t17a40, ...
+  std::size_t rank = 0;  // 1 = the best of its n in its list
+  double seconds = 0;    // what finding and certifying it cost
   // The best of its n where the optimum is proven (Delta(k) by Oler's bound, n <= 15 by GL1995
   // sec. 1): set by whoever knows the best of n.
   bool proven_optimal = false;
-  std::string file;       // where its coordinates were written or read, when they were
+  std::string file;  // where its coordinates were written or read, when they were
 
   static PackingRecord of(Pattern pattern);  // d and L from its long double d
   long long n() const { return static_cast<long long>(pattern.packing.size()); }
@@ -68,7 +68,7 @@ struct PackingRecord {
   // broken by it, so an order never depends on which thread finished first.
   std::uint64_t first_seed() const;
   bool has_seed() const { return first_seed() != std::numeric_limits<std::uint64_t>::max(); }
-  long long runs() const;           // billiards runs over every source
+  long long runs() const;  // billiards runs over every source
   bool from_builder() const {
     return !sources.empty() && sources.front().kind == PackingSource::Kind::Builder;
   }

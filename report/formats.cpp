@@ -1,17 +1,22 @@
-#include "core/formats.hpp"
+#include "report/formats.hpp"
 
 #include <fstream>
 #include <sstream>
 
+#include "polish/polish_mp.hpp"
+
 namespace tripack {
 
 PrecisePoints coordinates_beyond_long_double(const PackingRecord& record, int digits) {
-  if (digits <= kLongDoubleRoundTripDigits || record.precise_points.size() != record.pattern.packing.size()) return {};
+  if (digits <= kLongDoubleRoundTripDigits ||
+      record.precise_points.size() != record.pattern.packing.size())
+    return {};
   PrecisePoints points;
   points.reserve(record.precise_points.size());
   for (const auto& p : record.precise_points) {
     const int known = std::max(significant_digits(p[0]), significant_digits(p[1]));
-    points.push_back({PreciseReal(0, p[0], known).str(digits), PreciseReal(0, p[1], known).str(digits)});
+    points.push_back(
+        {PreciseReal(0, p[0], known).str(digits), PreciseReal(0, p[1], known).str(digits)});
   }
   return points;
 }
@@ -42,13 +47,20 @@ void json_writer(std::ostream& out, const PackingRecord& r, const WriteOptions& 
   write_json(out, r.pattern, with_record_digits(r, options, {}));
 }
 void records_writer(std::ostream& out, const PackingRecord& r, const WriteOptions& options) {
-  RecordsTable table = records_table(r.pattern, std::min(options.digits, kLongDoubleRoundTripDigits),
-                                     options.convention);
+  RecordsTable table = records_table(
+      r.pattern, std::min(options.digits, kLongDoubleRoundTripDigits), options.convention);
   table.label = options.label.empty() ? r.label : options.label;
   table.d = r.d.str(options.d_digits);
   table.L = r.L.str(options.d_digits);
-  table.r = format_significant(radius_from_d(r.d.value()), std::min(options.d_digits, kLongDoubleDigits));
-  table.S = format_significant(side_from_d(r.d.value()), std::min(options.d_digits, kLongDoubleDigits));
+  if (r.d.multiprecision() && options.d_digits > kLongDoubleDigits) {  // MPFR: every digit
+    table.r = radius_or_side_from_d(table.d, true, options.d_digits);
+    table.S = radius_or_side_from_d(table.d, false, options.d_digits);
+  } else {
+    table.r = format_significant(radius_from_d(r.d.value()),
+                                 std::min(options.d_digits, kLongDoubleDigits));
+    table.S =
+        format_significant(side_from_d(r.d.value()), std::min(options.d_digits, kLongDoubleDigits));
+  }
   const PrecisePoints precise = coordinates_beyond_long_double(r, options.digits);
   if (options.convention == Convention::UnitTriangle)
     for (std::size_t i = 0; i < precise.size() && i < table.points.size(); ++i)
@@ -68,7 +80,10 @@ const std::vector<PackingFormat>& packing_formats() {
       {"txt", {".txt"}, reader<FileFormat::Text>, text_writer, "x y lines under a # header"},
       {"csv", {".csv"}, reader<FileFormat::Csv>, csv_writer, "index,x,y,rattler"},
       {"json", {".json"}, reader<FileFormat::Json>, json_writer, "{\"points\": ..., \"d\": ...}"},
-      {"records", {".pck", ".records"}, reader<FileFormat::Records>, records_writer,
+      {"records",
+       {".pck", ".records"},
+       reader<FileFormat::Records>,
+       records_writer,
        "i x y lines with d, r, S, L in the header"},
       {"xyz", {".xyz"}, nullptr, write_extended_xyz, "extended XYZ (OVITO, VMD): written only"},
   };

@@ -20,8 +20,8 @@ struct PackingFormat {
   // Writes one packing with options.digits significant digits of the coordinates and
   // options.d_digits of d: beyond long double from the record's MPFR digits when it has them,
   // else at most kLongDoubleRoundTripDigits (what a long double holds).
-  void (*write)(std::ostream& out, const PackingRecord& record, const WriteOptions& options) =
-      nullptr;
+  void (*write)(std::ostream& out, const PackingRecord& record,
+                const WriteOptions& options) = nullptr;
   std::string description;
 };
 

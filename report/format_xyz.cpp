@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <ostream>
 
-#include "core/formats.hpp"
+#include "report/formats.hpp"
 
 namespace tripack {
 
