@@ -649,5 +649,30 @@ TEST(Billiards, SameEndStateAsBeforeTheEffectPolicies) {
   }
 }
 
+// Each effect describes itself for the reports (sim/effects/*.hpp), in the effect list's order,
+// and only when the scene uses it.
+TEST(Billiards, EffectsDescribeThemselves) {
+  const Scene s = parse_scene(R"(
+n: 22
+effects:
+  growth: {rate: 0.01, schedule: [{pressure: 1e3, rate: 0.005}]}
+  thermostat: {}
+  shake: {per_disk: 300}
+  pinned: [4, 7]
+)");
+  const std::vector<std::string> expected{
+      "growth at rate 0.01, 0.005 below an estimated gap of 0.002",
+      "thermostat every 10 n = 220 collisions",
+      "shake 300 collisions per disk (rattlers: 20x fewer than the median disk)",
+      "pinned disks 4 7"};
+  EXPECT_EQ(describe_effects(s), expected);
+  Scene plain = s;
+  plain.shake.reset();
+  plain.pinned.clear();
+  plain.thermostat = ThermostatEffect{50};
+  EXPECT_EQ(describe_effects(plain).back(), "thermostat every 50 collisions");
+  EXPECT_TRUE(describe_effects(scene_from_packing(Packing{{{0, 0}}, 1})).empty());
+}
+
 }  // namespace
 }  // namespace tripack
