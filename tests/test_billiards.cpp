@@ -633,8 +633,12 @@ TEST(Billiards, SameEndStateAsBeforeTheEffectPolicies) {
       {"elastic", 4, 0x1.c0d7558ccd69fp-4, 21895, 20000, 0x3d08afe43d8a4749ull, "max collisions"},
       {"thermostat", 4, 0x1.c0d7558ccd69fp-4, 21892, 20000, 0xa0feff5eff3b92f9ull,
        "max collisions"},
-      {"pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 0, 0xdfe9530b24d64aa1ull, "max events"},
-      {"thermostat+pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 0, 0xdfe9530b24d64aa1ull, "max events"},
+      // Pinned disks without growth: values after the exit_time fix (a disk at rest in its
+      // neighbourhood never leaves it); the old engine processed 20000 updates of the pinned
+      // disks at time 0 and no collision here (Billiards.PinnedDisksWithoutGrowthLetTheOthersMove).
+      {"pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 18439, 0x5d9d81fe1d21b1d1ull, "max events"},
+      {"thermostat+pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 18433, 0xd211f04a929c60fcull,
+       "max events"},
   };
   for (const auto& c : cases) {
     BilliardsOptions o;
@@ -672,6 +676,41 @@ effects:
   plain.thermostat = ThermostatEffect{50};
   EXPECT_EQ(describe_effects(plain).back(), "thermostat every 50 collisions");
   EXPECT_TRUE(describe_effects(scene_from_packing(Packing{{{0, 0}}, 1})).empty());
+}
+
+// A disk at rest in a neighbourhood that does not shrink (a pinned disk without growth) never
+// leaves it. exit_time read that never as now, so such a disk had an update event at the same
+// time over and over: an elastic run with pinned disks did nothing but those until max_events,
+// and shaking with pinned disks (always elastic) never collided.
+TEST(Billiards, PinnedDisksWithoutGrowthLetTheOthersMove) {
+  Scene s = random_start(30, 3, 0.9L);
+  s.pinned = {3, 17};
+  s.stop.max_collisions = 20'000;
+  std::mt19937_64 rng(4);
+  const BilliardsResult r = run_billiards(s, rng);
+  EXPECT_EQ(r.stop_reason, "max collisions");
+  EXPECT_EQ(r.collisions, 20'000u);
+  EXPECT_LT(r.events, 30'000u);
+  EXPECT_LE(r.max_overlap, 1e-12);
+  for (int i : s.pinned) {  // (to the rounding of the container <-> Packing mapping)
+    EXPECT_NEAR(double(r.packing.points[std::size_t(i)].x), double(s.points[std::size_t(i)].x),
+                1e-15)
+        << i;
+    EXPECT_NEAR(double(r.packing.points[std::size_t(i)].y), double(s.points[std::size_t(i)].y),
+                1e-15)
+        << i;
+  }
+  Scene shaken = random_start(30, 3, 0.9L);
+  shaken.pinned = {3, 17};
+  shaken.shake = ShakeEffect{50, 20};
+  std::mt19937_64 rng2(4);
+  const BilliardsResult sh = run_billiards(shaken, rng2);
+  EXPECT_EQ(sh.stop_reason, "shake only");
+  EXPECT_EQ(sh.shake_collisions, 50u * 30u);
+  EXPECT_EQ(sh.excursion[3], 0.0);  // the pinned disks are hit but never move
+  EXPECT_EQ(sh.excursion[17], 0.0);
+  EXPECT_GT(sh.excursion[0], 0.0);
+  EXPECT_LT(sh.shake_seconds, 5.0);
 }
 
 }  // namespace
