@@ -1,7 +1,9 @@
 // The closed-form and contact-system builders, one file per class family (docs/classes.md).
 // Each returns a Pattern in the unit triangle with its intended bonds and rattlers; none of them
 // validates its arguments against the catalogue (the registry does that) beyond what geometry
-// requires.
+// requires. build_pattern finds them by their classes.yaml name, registered in each builder's own
+// file (constructors/registry.hpp); the declarations here are for calling a builder directly
+// (tests, benchmarks), which a new builder does not need.
 #pragma once
 
 #include <string>

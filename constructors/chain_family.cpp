@@ -5,6 +5,7 @@
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/chain.hpp"
+#include "constructors/registry.hpp"
 
 namespace tripack {
 
@@ -72,5 +73,12 @@ Pattern build_chain_family(const ChainFamilyShape& s) {
   }
   return pat.finish({});
 }
+
+namespace {
+const BuilderRegistration kChainFamily{
+    "chain-family", [](const BuilderCall& c) {
+      return build_chain_family({c.arg("q"), c.arg("block"), static_cast<int>(c.arg("separator"))});
+    }};
+}  // namespace
 
 }  // namespace tripack

@@ -4,6 +4,7 @@
 
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
+#include "constructors/registry.hpp"
 
 namespace tripack {
 
@@ -25,5 +26,10 @@ Pattern build_four_delta(long k) {
   pat.add_triangle({apex.x, half}, E::e60, E::e120, k);  // inverted, concentric, vertex (L/2, 1/2)
   return pat.finish({});
 }
+
+namespace {
+const BuilderRegistration kFourDelta{"four-delta",
+                                     [](const BuilderCall& c) { return build_four_delta(c.k); }};
+}  // namespace
 
 }  // namespace tripack

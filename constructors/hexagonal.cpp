@@ -3,6 +3,7 @@
 
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
+#include "constructors/registry.hpp"
 
 namespace tripack {
 
@@ -24,5 +25,12 @@ Pattern build_hexagonal_minus_one(long k) {
   pat.erase(0);  // the bottom-left corner disk
   return pat.finish({});
 }
+
+namespace {
+const BuilderRegistration kHexagonal{"hexagonal",
+                                     [](const BuilderCall& c) { return build_hexagonal(c.k); }};
+const BuilderRegistration kHexagonalMinusOne{
+    "hexagonal-minus-one", [](const BuilderCall& c) { return build_hexagonal_minus_one(c.k); }};
+}  // namespace
 
 }  // namespace tripack

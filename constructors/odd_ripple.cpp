@@ -31,6 +31,7 @@
 
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
+#include "constructors/registry.hpp"
 #include "core/neighbours.hpp"
 #include "polish/polish.hpp"
 
@@ -409,5 +410,12 @@ Pattern build_odd_ripple_other(long k) {
   if (k == 2) f.bond(f.raised_disk(1), a2);
   return f.finish(rattlers, 0.25L, "odd ripple (other)");
 }
+
+namespace {
+const BuilderRegistration kOddRipple{
+    "odd-ripple", [](const BuilderCall& c) {
+      return c.variant == "other" ? build_odd_ripple_other(c.k) : build_odd_ripple_depressed(c.k);
+    }};
+}  // namespace
 
 }  // namespace tripack

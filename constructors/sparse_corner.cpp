@@ -36,6 +36,7 @@
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/chain.hpp"
+#include "constructors/registry.hpp"
 #include "polish/polish.hpp"
 
 namespace tripack {
@@ -249,5 +250,10 @@ Pattern build_sparse_corner(long k) {
                            std::to_string(k));
   return out;
 }
+
+namespace {
+const BuilderRegistration kSparseCorner{
+    "sparse-corner", [](const BuilderCall& c) { return build_sparse_corner(c.k); }};
+}  // namespace
 
 }  // namespace tripack

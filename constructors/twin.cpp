@@ -6,6 +6,7 @@
 
 #include "constructors/blocks.hpp"
 #include "constructors/builders.hpp"
+#include "constructors/registry.hpp"
 
 namespace tripack {
 
@@ -52,5 +53,17 @@ Pattern build_twin(long k, long cavity) {
   }
   return pat.finish({});
 }
+
+namespace {
+// Variants: rattler (no disk in the cavity), cavity-m, full (= cavity-k).
+const BuilderRegistration kTwin{"twin", [](const BuilderCall& c) {
+                                  long cavity = 0;
+                                  if (c.variant == "full")
+                                    cavity = c.k;
+                                  else if (c.variant.starts_with("cavity-"))
+                                    cavity = std::stol(c.variant.substr(7));
+                                  return build_twin(c.k, cavity);
+                                }};
+}  // namespace
 
 }  // namespace tripack

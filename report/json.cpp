@@ -112,6 +112,7 @@ json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
   json j;
   j["n"] = r.scene.n;
   j["runs_asked"] = r.runs_asked;
+  j["effects"] = describe_effects(r.scene);
   j["seconds"] = r.seconds;
   j["runs"] = json::array();
   for (const auto& run : r.runs) {

@@ -178,6 +178,8 @@ void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
                        a ? std::to_string(a->pattern.rattlers.size()) : "-",
                        a ? (a->certified() ? "yes" : "no") : "-", run.label);
   }
+  if (const auto effects = describe_effects(r.scene); !effects.empty())
+    out << fmt::format("effects: {}\n", fmt::join(effects, "; "));
   if (r.scene.shake) {
     out << fmt::format(
         "shaking at fixed size ({} collisions per disk): rattlers = disks colliding {}x less "

@@ -1,14 +1,16 @@
 // run_billiards: a scene's start state in container units (random or given points and
-// velocities), the engine's Z-order numbering of the disks, the dispatcher that picks the engine
-// instantiation for the run's effects, and the mapping of the results back to the scene (disk
-// numbering, Packing convention). The only translation unit that includes sim/engine.hpp: the
-// engine is compiled here, with -fno-math-errno -fno-trapping-math (CMakeLists.txt).
+// velocities), the engine's Z-order numbering of the disks, the dispatcher that compiles the
+// engine for the run's effects, the effects' own phases (shaking), and the mapping of the results
+// back to the scene (disk numbering, Packing convention). The only translation unit that includes
+// sim/engine.hpp: the engine is compiled here, with -fno-math-errno -fno-trapping-math
+// (CMakeLists.txt).
 #include "sim/billiards.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <utility>
 
+#include "sim/effect_list.hpp"
 #include "sim/effects.hpp"
 #include "sim/engine.hpp"
 #include "sim/setup.hpp"
@@ -16,24 +18,60 @@
 namespace tripack {
 namespace sim_detail {
 
-template <bool G, bool T, bool P, bool S = false>
-BilliardsResult run_engine(Setup s, const BilliardsOptions& o) {
-  return Engine<G, T, P, S>(std::move(s), o).run();
+// An effect with per-run engine state takes part in the main phase; one with a phase of its own
+// runs it after that.
+template <class P>
+concept InMainPhase = requires(const RunStart& start) {
+  P::for_run(start);
+};
+template <class P>
+concept WithOwnPhase = requires(BilliardsResult& r, const RunStart& start) {
+  P::template after_run<Engine>(r, start);
+};
+template <class P>
+concept ReplacingMainPhase = requires(const Scene& s) {
+  P::replaces_main_phase(s);
+};
+
+// The main phase: walks the effect list and runs the engine compiled for the effects the scene
+// uses (every effect with options.all_policies), so 2^k instantiations for k main-phase effects.
+template <class... Chosen>
+BilliardsResult run_main_phase(EffectList<>, const RunStart& start, Setup s, Chosen&&... chosen) {
+  return Engine<std::decay_t<Chosen>...>(std::move(s), start.options,
+                                         std::forward<Chosen>(chosen)...)
+      .run();
 }
-// The engine compiled for exactly the effects a run needs (the shaking engine never grows);
-// declared in sim/setup.hpp.
-BilliardsResult run_engine_for(bool G, bool T, bool P, bool shaking, Setup s,
-                               const BilliardsOptions& o) {
-  auto pins = [&]<bool g, bool t, bool sh>() {
-    return P ? run_engine<g, t, true, sh>(std::move(s), o)
-             : run_engine<g, t, false, sh>(std::move(s), o);
+template <class First, class... Rest, class... Chosen>
+BilliardsResult run_main_phase(EffectList<First, Rest...>, const RunStart& start, Setup s,
+                               Chosen&&... chosen) {
+  if constexpr (InMainPhase<First>) {
+    if (First::active(start.scene) || start.options.all_policies)
+      return run_main_phase(EffectList<Rest...>{}, start, std::move(s),
+                            std::forward<Chosen>(chosen)..., First::for_run(start));
+  }
+  return run_main_phase(EffectList<Rest...>{}, start, std::move(s),
+                        std::forward<Chosen>(chosen)...);
+}
+
+template <class... Policies>
+void run_own_phases(EffectList<Policies...>, BilliardsResult& r, const RunStart& start) {
+  const auto run = [&]<class P>() {
+    if constexpr (WithOwnPhase<P>)
+      if (P::active(start.scene)) P::template after_run<Engine>(r, start);
   };
-  if (shaking) return pins.template operator()<false, false, true>();
-  if (G)
-    return T ? pins.template operator()<true, true, false>()
-             : pins.template operator()<true, false, false>();
-  return T ? pins.template operator()<false, true, false>()
-           : pins.template operator()<false, false, false>();
+  (run.template operator()<Policies>(), ...);
+}
+
+// The key of the effect that runs instead of the main phase, or nullptr.
+template <class... Policies>
+const char* replacing_effect(EffectList<Policies...>, const Scene& scene) {
+  const char* key = nullptr;
+  const auto find = [&]<class P>() {
+    if constexpr (ReplacingMainPhase<P>)
+      if (P::active(scene) && P::replaces_main_phase(scene)) key = P::kKey;
+  };
+  (find.template operator()<Policies>(), ...);
+  return key;
 }
 
 }  // namespace sim_detail
@@ -72,12 +110,6 @@ std::vector<T> permuted(const std::vector<T>& v, const std::vector<int>& order) 
   for (std::size_t k = 0; k < order.size(); ++k) out[k] = v[std::size_t(order[k])];
   return out;
 }
-template <class T>
-std::vector<T> unpermuted(const std::vector<T>& v, const std::vector<int>& order) {
-  std::vector<T> out(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) out[std::size_t(order[k])] = v[k];
-  return out;
-}
 
 }  // namespace
 
@@ -89,8 +121,6 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
   Setup s;
   s.stop = scene.stop;
   s.diam_cap = diameter_cap(n);
-  s.pinned.assign(std::size_t(n), 0);
-  for (int i : scene.pinned) s.pinned[std::size_t(i)] = 1;
   std::uniform_real_distribution<double> u01(0, 1);
   if (scene.points.empty()) {
     s.diam0 = 0;
@@ -106,57 +136,32 @@ BilliardsResult run_billiards(const Scene& scene, std::mt19937_64& rng,
     for (const auto& p : scene.points)
       s.x.push_back(Vec2(Vec2L{kSqrt3 * r + p.x * side, r + p.y * side}));
   }
-  if (!scene.velocities.empty()) {
-    s.v = scene.velocities;
-  } else {
-    for (int i = 0; i < n; ++i) {
-      const double phi = 2 * M_PI * u01(rng);
-      s.v.push_back({std::cos(phi), std::sin(phi)});
-    }
-  }
-  const bool G = scene.growth && scene.growth->rate > 0;
-  const bool T = scene.thermostat.has_value();
-  const bool P = !scene.pinned.empty();
-  if (G) s.rate = scene.growth->rate;
-  if (G) s.schedule = scene.growth->schedule;
-  if (T) s.thermostat_every = scene.thermostat->every ? scene.thermostat->every : 10 * n;
-  if (!T) s.thermostat_every = std::numeric_limits<std::uint64_t>::max();
+  s.v = scene.velocities.empty() ? random_unit_velocities(std::size_t(n), rng) : scene.velocities;
 
   // The engine numbers disks along a Z-order curve of their start cells, so neighbours sit close
   // in memory; everything it returns is mapped back to the scene's numbering.
-  const std::vector<int> order = spatial_order(s.x, s.diam_cap);
-  s.x = permuted(s.x, order);
-  s.v = permuted(s.v, order);
-  s.pinned = permuted(s.pinned, order);
+  const RunStart start{scene, spatial_order(s.x, s.diam_cap), s.diam_cap, rng, options};
+  s.x = permuted(s.x, start.order);
+  s.v = permuted(s.v, start.order);
   const std::size_t traced = options.trace ? options.trace->size() : 0;
-  const std::vector<char> pinned = s.pinned;
-  const double diam_cap = s.diam_cap;
 
   BilliardsResult r;
-  const bool main_phase = G || !scene.shake;  // without growth, a shaking scene only shakes
-  if (!main_phase) {
+  if (const char* instead = replacing_effect(SceneEffects{}, scene)) {
     r.positions = s.x;
     r.velocities = s.v;
     r.diameter = s.diam0;
-    r.stop_reason = "shake only";
+    r.stop_reason = std::string(instead) + " only";
+  } else {
+    r = run_main_phase(SceneEffects{}, start, std::move(s));
   }
-  if (main_phase) {
-    const bool all = options.all_policies;
-    r = run_engine_for(G || all, T || all, P || all, false, std::move(s), options);
-  }
-  if (scene.shake) shake(r, *scene.shake, pinned, diam_cap, rng, options);
-  r.positions = unpermuted(r.positions, order);
-  r.velocities = unpermuted(r.velocities, order);
-  if (scene.shake) {
-    r.excursion = unpermuted(r.excursion, order);
-    r.shake_hits = unpermuted(r.shake_hits, order);
-    r.shake_rattlers = shake_rattlers(r.shake_hits, scene.shake->rattler_factor, scene.pinned);
-  }
+  run_own_phases(SceneEffects{}, r, start);
+  r.positions = start.to_scene_numbering(r.positions);
+  r.velocities = start.to_scene_numbering(r.velocities);
   if (options.trace)
     for (std::size_t k = traced; k < options.trace->size(); ++k) {
       auto& e = (*options.trace)[k];
-      e.i = order[std::size_t(e.i)];
-      if (e.partner >= 0) e.partner = order[std::size_t(e.partner)];
+      e.i = start.order[std::size_t(e.i)];
+      if (e.partner >= 0) e.partner = start.order[std::size_t(e.partner)];
     }
   // Map the centres' triangle (inset by diam/2) onto the unit triangle.
   const long double diam = r.diameter, rad = diam / 2, side = 1 - kSqrt3 * diam;

@@ -1,6 +1,6 @@
-// The billiards effects that act outside the engine's event loop: the container's diameter
-// bound, the growth schedule's rate choice (at block ends), and shaking at fixed size with its
-// rattler test. Kept out of sim/engine.hpp: none of it is on the hot path.
+// The effects' helpers that are not engine hooks: the container's diameter bound, the growth
+// schedule's rate choice, fresh random velocities and the shake's rattler test. The effects
+// themselves are policy types (sim/effect.hpp, sim/effects/*.hpp, listed in sim/effect_list.hpp).
 #pragma once
 
 #include <cstdint>
@@ -19,11 +19,8 @@ double diameter_cap(int n);
 // when none).
 double scheduled_rate(double base_rate, const std::vector<GrowthStep>& schedule, double gap);
 
-// Shaking at fixed size: an elastic run from the state in r (engine numbering) for per_disk * n
-// collisions with fresh random unit velocities, recording each disk's path extent in
-// r.excursion. The state in r is left as it was (shaking is a diagnostic).
-void shake(BilliardsResult& r, const ShakeEffect& fx, const std::vector<char>& pinned,
-           double diam_cap, std::mt19937_64& rng, const BilliardsOptions& options);
+// n velocities of unit speed in uniformly random directions.
+std::vector<Vec2> random_unit_velocities(std::size_t n, std::mt19937_64& rng);
 
 // The rattlers of a shake: the disks (not pinned) that collided more than rattler_factor times
 // less often than the median disk.

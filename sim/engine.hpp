@@ -1,11 +1,12 @@
-// The Lubachevsky-Stillinger event loop: Engine<kGrowth, kThermostat, kPinned, kTrack> predicts,
-// orders and processes the collisions and neighbourhood updates of one run.
+// The Lubachevsky-Stillinger event loop: Engine<Effects...> predicts, orders and processes the
+// collisions and neighbourhood updates of one run.
 //
-// A template so that the effects a scene does not use are compiled out. Private to sim/: only
-// sim/billiards.cpp (the dispatcher, run_engine_for) includes it, so it is instantiated in one
-// translation unit, compiled with -fno-math-errno -fno-trapping-math (CMakeLists.txt). The event
-// queue (sim/event_queue.hpp), the neighbour lists and pair times (sim/neighbourhood.hpp) and the
-// effects outside the loop (sim/effects.hpp) are in their own files.
+// A template on the effects' policy types (sim/effect.hpp) so that the effects a run does not use
+// are compiled out: the hooks of absent effects do not exist, and the empty hooks of present ones
+// inline to nothing. Private to sim/: only sim/billiards.cpp (the dispatcher) includes it, so it
+// is instantiated in one translation unit, compiled with -fno-math-errno -fno-trapping-math
+// (CMakeLists.txt). The event queue (sim/event_queue.hpp), the neighbour lists and pair times
+// (sim/neighbourhood.hpp) and the effects (sim/effects/*.hpp) are in their own files.
 #pragma once
 
 #include <algorithm>
@@ -13,31 +14,37 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "sim/billiards.hpp"
-#include "sim/effects.hpp"
+#include "sim/effect.hpp"
 #include "sim/event_queue.hpp"
 #include "sim/neighbourhood.hpp"
 #include "sim/setup.hpp"
 
 namespace tripack::sim_detail {
 
-// kGrowth, kThermostat, kPinned, kTrack (shaking: each disk's path extent): which effects are
-// compiled in. Absent effects are constant-folded away (rate 0, no rescaling, no pinned tests,
-// no extent updates on the hot path).
-template <bool kGrowth, bool kThermostat, bool kPinned, bool kTrack = false>
+template <class... Effects>
 class Engine {
+  static constexpr std::size_t grower_index() {
+    constexpr bool grows[] = {Effects::kGrows..., false};
+    std::size_t i = 0;
+    while (i < sizeof...(Effects) && !grows[i]) ++i;
+    return i;
+  }
+  static constexpr std::size_t kGrower = grower_index();
+
  public:
-  Engine(Setup s, const BilliardsOptions& o) : opt_(o), stop_(s.stop), n_(int(s.x.size())) {
-    if constexpr (kGrowth) g_ = base_rate_ = s.rate;
-    if constexpr (kGrowth) schedule_ = s.schedule;
-    if constexpr (kTrack) {
-      lo_ = hi_ = s.x;
-      hits_.assign(std::size_t(n_), 0);
-    }
-    if constexpr (kThermostat) every_ = s.thermostat_every;
-    if constexpr (kPinned) pinned_ = s.pinned;
+  // Whether an effect grows the disks; without one the rate is 0 at compile time.
+  static constexpr bool kGrows = kGrower < sizeof...(Effects);
+  static_assert((0 + ... + int(Effects::kGrows)) <= 1, "at most one effect sets the growth rate");
+  static constexpr bool kHasHorizon = (false || ... || Effects::kHasHorizon);
+
+  Engine(Setup s, const BilliardsOptions& o, Effects... effects)
+      : opt_(o), stop_(s.stop), n_(int(s.x.size())), fx_(std::move(effects)...) {
     diam0_ = s.diam0;
     disks_.resize(std::size_t(n_));
     traj_.assign(std::size_t(n_), 0);
@@ -46,21 +53,19 @@ class Engine {
       disks_[std::size_t(i)].v = is_pinned(i) ? Vec2{} : s.v[std::size_t(i)];
     }
     nb_.build(disks_, now_, diameter(now_), std::max(s.diam_cap, s.diam0) * (1 + 1e-9));
-    block_ = std::max<std::uint64_t>(20 * std::uint64_t(n_), 2000);
-    if constexpr (kPinned) pin_limit_ = pinned_limit();
+    block_events_ = std::max<std::uint64_t>(20 * std::uint64_t(n_), 2000);
   }
 
   BilliardsResult run() {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     BilliardsResult r;
+    each_effect([&](auto& fx) { fx.on_start(*this); });
     r.kinetic_energy_start = kinetic_energy();
-    energy_target_ = 2 * r.kinetic_energy_start;
-    block_energy_ = energy_target_;
+    block_stats_.energy_start = 2 * r.kinetic_energy_start;
     rebuild_heap();
-    std::uint64_t since_sync = 0, since_rescale = 0, stalls = 0;
+    std::uint64_t since_block = 0;  // events
     double next_progress = opt_.progress_seconds;
-    double block_diam = diameter(0);
     auto stop = [&](const char* why, bool jammed) {
       r.stop_reason = why;
       r.jammed = jammed;
@@ -71,10 +76,10 @@ class Engine {
         break;
       }
       const Event e = heap_.top();
-      if constexpr (kPinned) {
-        if (e.t > pin_limit_ && kGrowth) {
-          now_ = std::max(now_, pin_limit_);
-          stop("pinned disks touch", true);
+      if constexpr (kHasHorizon) {
+        if (const auto [until, why] = horizon(); e.t > until) {
+          now_ = std::max(now_, until);
+          stop(why.why, why.jammed);
           break;
         }
       }
@@ -84,18 +89,18 @@ class Engine {
         continue;
       }
       ++r.events;
-      ++since_sync;
+      ++since_block;
       if (e.j >= 0) {
         collide(e.i, e.j);
         ++r.collisions;
-        ++since_rescale;
+        each_effect([&](auto& fx) { fx.on_collision(e.i, e.j); });
         record(r, e.i, e.j);
         predict(e.i);
         predict(e.j);
       } else if (e.j >= -3) {
         bounce(e.i, static_cast<Side>(-1 - e.j));
         ++r.collisions;
-        ++since_rescale;
+        each_effect([&](auto& fx) { fx.on_collision(e.i, e.j); });
         record(r, e.i, e.j);
         predict(e.i);
       } else {
@@ -123,57 +128,24 @@ class Engine {
           opt_.progress({r.events, r.collisions, elapsed, diameter(now_), gap_});
         }
       }
-      const bool rescale = kThermostat && since_rescale >= every_;
-      if (since_sync >= block_ || rescale) {
-        block_time_ += now_;
-        const bool rebuilt = sync();
-        bool new_rate = false;
-        if constexpr (kGrowth) {
-          if (since_sync >= block_) {
-            const double d = diameter(0);
-            const double e2 = (block_energy_ + 2 * kinetic_energy()) / 2;  // mean sum v^2
-            // Free-volume estimate (2D): reduced pressure p = sum(D J) / (2 N kT dt) with
-            // kT = <v^2>/2, and 1 - D/D_jam = 2/p = 2 sum(v^2) dt / sum(D J).
-            if (virial_ > 0 && g_ > 0) gap_ = 2 * e2 * block_time_ / virial_;
-            if (gap_ < stop_.relative_gap) {
-              stop("relative gap reached", true);
-              break;
-            }
-            if (stop_.pressure > 0 && 2 / gap_ > stop_.pressure) {
-              stop("pressure reached", true);
-              break;
-            }
-            // Growth below rounding for several blocks: the precision limit of double.
-            const bool stalled =
-                g_ > 0 && d - block_diam <= 8 * std::numeric_limits<double>::epsilon() * d;
-            stalls = stalled ? stalls + 1 : 0;
-            if (stalls >= 3) {
-              stop("growth stalled at the precision limit", true);
-              break;
-            }
-            block_diam = d;
-            virial_ = 0;
-            block_time_ = 0;
-            since_sync = 0;
-            block_energy_ = -1;
-            // Growth schedule: the rate of the last step whose gap the estimate is below. The
-            // clock was just restarted (diameter = diam0 + g t from t = 0), so g may change here.
-            const double want = scheduled_rate(base_rate_, schedule_, gap_);
-            if (want != g_) {
-              g_ = want;
-              new_rate = true;
-              if constexpr (kPinned) pin_limit_ = pinned_limit();
-            }
+      const bool requested = (false || ... || std::get<Effects>(fx_).sync_due());
+      if (since_block >= block_events_ || requested) {
+        block_stats_.time += now_;
+        bool replan = sync();
+        if (since_block >= block_events_) {
+          if (const std::optional<Stop> verdict = block_end()) {
+            stop(verdict->why, verdict->jammed);
+            break;
           }
-        } else {
-          since_sync = 0;
+          block_stats_ = {0, 0, -1};
+          since_block = 0;
+        } else if constexpr (!kGrows) {
+          since_block = 0;  // nothing reads the block statistics: a block is the time since a sync
         }
-        if (rescale) {
-          thermostat();
-          since_rescale = 0;
-        }
-        if (block_energy_ < 0) block_energy_ = 2 * kinetic_energy();
-        if (rescale || rebuilt || new_rate) rebuild_heap();  // else the shifted ones still hold
+        each_effect([&](auto& fx) { replan = fx.at_sync(*this) || replan; });
+        replan = std::exchange(rate_changed_, false) || replan;
+        if (block_stats_.energy_start < 0) block_stats_.energy_start = 2 * kinetic_energy();
+        if (replan) rebuild_heap();  // else the shifted predictions still hold
       }
     }
     sync();
@@ -183,14 +155,7 @@ class Engine {
     r.relative_gap = gap_;
     r.kinetic_energy_end = kinetic_energy();
     r.growth_rate = rate();
-    if constexpr (kTrack) {
-      const double D = diameter(0);
-      for (int i = 0; i < n_; ++i) {
-        const Vec2 e = hi_[std::size_t(i)] - lo_[std::size_t(i)];
-        r.excursion.push_back(D > 0 ? std::max(e.x, e.y) / D : 0.0);
-      }
-      r.shake_hits = hits_;
-    }
+    each_effect([&](const auto& fx) { fx.at_end(*this, r); });
     r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     for (const auto& d : disks_) {
       r.positions.push_back(d.x0);  // synced: the clock is at 0
@@ -199,24 +164,72 @@ class Engine {
     return r;
   }
 
- private:
-  bool is_pinned(int i) const {
-    if constexpr (kPinned)
-      return pinned_[std::size_t(i)] != 0;
-    else
-      return (void)i, false;
-  }
+  // --- what the effects' hooks may use ---
+  int size() const { return n_; }
+  // Diameter at engine time t (the clock restarts at every sync).
   double diameter(double t) const {
-    if constexpr (kGrowth)
-      return diam0_ + g_ * t;
+    if constexpr (kGrows)
+      return diam0_ + rate() * t;
     else
       return (void)t, diam0_;
   }
   double rate() const {
-    if constexpr (kGrowth)
-      return g_;
+    if constexpr (kGrows)
+      return std::get<kGrower>(fx_).rate();
     else
       return 0;
+  }
+  // The growing effect changed rate(), at a block end or sync (the clock was just restarted, so
+  // diameter(t) = diameter(0) + rate() t holds from there): the effects are told and the
+  // predictions redone.
+  void rate_changed() {
+    rate_changed_ = true;
+    each_effect([&](auto& fx) { fx.on_rate_change(*this); });
+  }
+  Vec2 position(int i) const { return position(disks_[std::size_t(i)]); }
+  double kinetic_energy() const {
+    double e = 0;
+    for (const auto& d : disks_) e += dot(d.v, d.v) / 2;
+    return e;
+  }
+  // Multiplies every velocity by s (at a sync: then the predictions must be redone).
+  void scale_velocities(double s) {
+    for (auto& d : disks_) set_velocity(d, position(d), d.v * s);
+    for (auto& t : traj_) ++t;
+  }
+  const StopRules& stop_rules() const { return stop_; }
+  const BlockStatistics& block() const { return block_stats_; }
+  // The estimated relative gap to jamming 1 - D / D_jam (1 until an effect estimates it).
+  double relative_gap() const { return gap_; }
+  void set_relative_gap(double gap) { gap_ = gap; }
+
+ private:
+  template <class F>
+  void each_effect(F&& f) {
+    std::apply([&](auto&... fx) { (f(fx), ...); }, fx_);
+  }
+  template <class F>
+  void each_effect(F&& f) const {
+    std::apply([&](const auto&... fx) { (f(fx), ...); }, fx_);
+  }
+  bool is_pinned(int i) const {
+    return std::apply([&](const auto&... fx) { return (false || ... || fx.is_pinned(i)); }, fx_);
+  }
+  // The earliest of the effects' horizons and its stop reason.
+  std::pair<double, Stop> horizon() const {
+    std::pair<double, Stop> earliest{kInf, {}};
+    each_effect([&](const auto& fx) {
+      if constexpr (std::decay_t<decltype(fx)>::kHasHorizon)
+        if (fx.horizon() < earliest.first) earliest = {fx.horizon(), fx.kHorizonStop};
+    });
+    return earliest;
+  }
+  // The first effect's verdict at a block end; later effects are not asked once one stops.
+  std::optional<Stop> block_end() {
+    std::optional<Stop> verdict;
+    std::apply([&](auto&... fx) { (void)(false || ... || (verdict = fx.at_block_end(*this))); },
+               fx_);
+    return verdict;
   }
   Vec2 position(const Disk& d) const { return d.x0 + d.v * now_; }
   // A new velocity from now on, the position at now kept.
@@ -224,28 +237,12 @@ class Engine {
     d.v = v;
     d.x0 = x - v * now_;
   }
-  // Shaking: paths are straight between events, so their extremes are at events.
-  void track(int i, Vec2 x) {
-    if constexpr (kTrack) {
-      auto& lo = lo_[std::size_t(i)];
-      auto& hi = hi_[std::size_t(i)];
-      lo = {std::min(lo.x, x.x), std::min(lo.y, x.y)};
-      hi = {std::max(hi.x, x.x), std::max(hi.y, x.y)};
-    } else {
-      (void)i, (void)x;
-    }
-  }
-  double kinetic_energy() const {
-    double e = 0;
-    for (const auto& d : disks_) e += dot(d.v, d.v) / 2;
-    return e;
-  }
 
   // --- neighbourhoods ---
   // Update event: disk i reached the edge of its neighbourhood; give it a new one.
   void relist(int i) {
     const Vec2 x = position(disks_[std::size_t(i)]);
-    track(i, x);
+    each_effect([&](auto& fx) { fx.on_disk_at(i, x); });
     nb_.relist(i, x, diameter(now_));
   }
 
@@ -305,8 +302,10 @@ class Engine {
     auto& a = disks_[std::size_t(i)];
     auto& b = disks_[std::size_t(j)];
     const Vec2 xa = position(a), xb = position(b);
-    track(i, xa);
-    track(j, xb);
+    each_effect([&](auto& fx) {
+      fx.on_disk_at(i, xa);
+      fx.on_disk_at(j, xb);
+    });
     Vec2 va = a.v, vb = b.v;
     const Vec2 dx = xb - xa;
     const double r2 = dot(dx, dx), q = dot(vb - va, dx);
@@ -325,25 +324,24 @@ class Engine {
         va -= dx * k;
         vb += dx * k;
       }
-      if constexpr (!kGrowth) {  // remove the rounding bias of the energy (~0.4 ulp a collision)
+      if constexpr (!kGrows) {  // remove the rounding bias of the energy (~0.4 ulp a collision)
         // v (1 + delta), added rather than multiplied: a factor next to 1 rounds with a bias.
         const double e1 = dot(va, va) + dot(vb, vb), delta = (e0 - e1) / (2 * e1);
         va += va * delta;
         vb += vb * delta;
       }
       // Virial r . dp: the momentum k dist moved across distance D (twice against a pinned disk).
-      virial_ += diameter(now_) * k * dist * (is_pinned(i) || is_pinned(j) ? 2 : 1);
+      block_stats_.virial += diameter(now_) * k * dist * (is_pinned(i) || is_pinned(j) ? 2 : 1);
       set_velocity(a, xa, va);
       set_velocity(b, xb, vb);
     }
     ++traj_[std::size_t(i)];
     ++traj_[std::size_t(j)];
-    if constexpr (kTrack) ++hits_[std::size_t(i)], ++hits_[std::size_t(j)];
   }
   void bounce(int i, Side side) {
     auto& d = disks_[std::size_t(i)];
     const Vec2 x = position(d);
-    track(i, x);
+    each_effect([&](auto& fx) { fx.on_disk_at(i, x); });
     const Vec2 nrm = wall_normal<double>(side);
     Vec2 v = d.v;
     const double vn = dot(v, nrm), g = rate();
@@ -351,15 +349,14 @@ class Engine {
     if (target > vn) {
       [[maybe_unused]] const double e0 = dot(v, v);
       v += nrm * (-2 * vn / dot(nrm, nrm) + (target + vn));
-      if constexpr (!kGrowth) {
+      if constexpr (!kGrows) {
         const double e1 = dot(v, v);
         v += v * ((e0 - e1) / (2 * e1));
       }
-      virial_ += diameter(now_) * (target - vn);
+      block_stats_.virial += diameter(now_) * (target - vn);
       set_velocity(d, x, v);
     }
     ++traj_[std::size_t(i)];
-    if constexpr (kTrack) ++hits_[std::size_t(i)];
   }
   void record(BilliardsResult&, int i, int j) {
     if (!opt_.trace) return;
@@ -376,7 +373,7 @@ class Engine {
     for (auto& d : disks_) d.x0 += d.v * now_;  // the position at now becomes x0
     diam0_ = diameter(now_);
     t_base_ += now_;
-    if constexpr (kPinned) pin_limit_ -= now_;
+    each_effect([&](auto& fx) { fx.on_clock_restart(now_); });
     now_ = 0;
     if (diam0_ <= nb_.diam_max()) return false;
     nb_.build(disks_, now_, diameter(now_), 2 * diam0_);  // a start beyond Oler's bound
@@ -385,13 +382,6 @@ class Engine {
   void rebuild_heap() {
     heap_.reset(n_);
     for (int i = 0; i < n_; ++i) predict(i);
-  }
-  void thermostat() {
-    const double e = 2 * kinetic_energy();
-    if (e <= 0 || energy_target_ <= 0) return;
-    const double s = std::sqrt(energy_target_ / e);
-    for (auto& d : disks_) set_velocity(d, position(d), d.v * s);
-    for (auto& t : traj_) ++t;
   }
   // Largest overlap (relative to the diameter) among pairs and walls, positions at now. Disks
   // that overlap have overlapping neighbourhoods, so the neighbour lists cover every pair.
@@ -428,36 +418,20 @@ class Engine {
     if (closest2 < kInf) worst = std::max(worst, D - std::sqrt(closest2));
     return worst / D;
   }
-  // Pinned pairs and pinned disks on walls cannot move apart: growth must stop when they touch.
-  double pinned_limit() const {
-    double dmax = kInf;
-    for (int i = 0; i < n_; ++i) {
-      if (!is_pinned(i)) continue;
-      const Vec2 xi = position(disks_[std::size_t(i)]);
-      for (Side s : kSides) dmax = std::min(dmax, 2 * wall_distance(xi, s, 1.0));
-      for (int j = i + 1; j < n_; ++j)
-        if (is_pinned(j)) dmax = std::min(dmax, norm(position(disks_[std::size_t(j)]) - xi));
-    }
-    if (rate() <= 0 || dmax == kInf) return kInf;
-    return std::max(dmax - diam0_, 0.0) / rate();
-  }
-
   BilliardsOptions opt_;
   StopRules stop_;
   int n_;
+  std::tuple<Effects...> fx_;
   std::vector<Disk> disks_;
   Neighbourhoods nb_;
   std::vector<std::uint32_t> traj_;
-  std::vector<char> pinned_;
   EventQueue heap_;
-  std::vector<Vec2> check_x_;        // max_overlap_all_pairs' positions
-  std::vector<Vec2> lo_, hi_;        // path extents (kTrack)
-  std::vector<std::uint64_t> hits_;  // collisions per disk (kTrack)
-  std::vector<GrowthStep> schedule_;
-  double base_rate_ = 0;
-  double g_ = 0, diam0_ = 0, now_ = 0, t_base_ = 0, pin_limit_ = kInf;
-  std::uint64_t every_ = 0, block_ = 0;
-  double virial_ = 0, block_time_ = 0, gap_ = 1, energy_target_ = 0, block_energy_ = 0;
+  std::vector<Vec2> check_x_;  // max_overlap_all_pairs' positions
+  double diam0_ = 0, now_ = 0, t_base_ = 0;
+  std::uint64_t block_events_ = 0;  // events per block
+  BlockStatistics block_stats_;
+  double gap_ = 1;
+  bool rate_changed_ = false;
 };
 
 }  // namespace tripack::sim_detail

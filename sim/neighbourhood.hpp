@@ -50,8 +50,11 @@ inline double exit_time(Vec2 p, Vec2 v, double s, double h) {
   const double disc = std::max(b * b - a * c, 0.0);
   double t = kInf;
   if (b >= 0) {
+    // q = 0 with the disk inside (c < 0): the root is at infinity (a disk at rest in a
+    // neighbourhood that does not shrink, e.g. a pinned disk without growth, never leaves it).
+    // Reading it as 0 gave that disk an update event at the same time forever.
     const double q = b + std::sqrt(disc);
-    t = q > 0 ? -c / q : 0;
+    t = q > 0 ? -c / q : (c < 0 ? kInf : 0);
   } else if (a > 0) {
     t = (-b + std::sqrt(disc)) / a;
   }

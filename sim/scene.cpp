@@ -13,37 +13,65 @@
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
+#include "sim/effect_list.hpp"
+#include "sim/scene_yaml.hpp"
 
 namespace tripack {
 namespace {
 
+using sim_detail::check_keys;
+using sim_detail::count;
+using sim_detail::EffectList;
+using sim_detail::scalar;
+using sim_detail::SceneEffects;
 [[noreturn]] void fail(const std::string& what) {
-  throw std::runtime_error("scene: " + what);
+  sim_detail::scene_error(what);
 }
 
-void check_keys(const YAML::Node& node, const std::set<std::string>& allowed,
-                const std::string& where) {
-  if (!node.IsMap()) fail(where + " must be a map");
-  for (const auto& kv : node) {
-    const auto key = kv.first.as<std::string>();
-    if (!allowed.count(key)) fail("unknown key '" + key + "' in " + where);
-  }
+// The effects' parts of a scene, each handled by its policy (sim/effect_list.hpp).
+template <class... Policies>
+void parse_effects(EffectList<Policies...>, const YAML::Node& node, Scene& s) {
+  check_keys(node, {Policies::kKey..., "stop"}, "effects");
+  const auto parse = [&]<class P>() {
+    if (const auto fx = node[P::kKey]) P::parse(fx, s);
+  };
+  (parse.template operator()<Policies>(), ...);
+}
+template <class... Policies>
+void validate_effects(EffectList<Policies...>, const Scene& s) {
+  (Policies::validate(s), ...);
+}
+template <class... Policies>
+void check_effects_after_parse(EffectList<Policies...>, const Scene& s) {
+  const auto check = [&]<class P>() {
+    if constexpr (requires { P::after_parse(s); }) P::after_parse(s);
+  };
+  (check.template operator()<Policies>(), ...);
+}
+template <class... Policies>
+bool grows(EffectList<Policies...>, const Scene& s) {
+  return (false || ... || (Policies::kGrows && Policies::active(s)));
+}
+template <class... Policies>
+std::vector<std::string> describe(EffectList<Policies...>, const Scene& s) {
+  std::vector<std::string> lines;
+  const auto add = [&]<class P>() {
+    if (P::active(s)) lines.push_back(P::describe(s));
+  };
+  (add.template operator()<Policies>(), ...);
+  return lines;
 }
 
-template <class T>
-T scalar(const YAML::Node& node, const std::string& name) {
-  if (!node.IsScalar()) fail(name + " must be a number");
-  try {
-    return node.as<T>();
-  } catch (const YAML::Exception&) {
-    fail("bad value '" + node.Scalar() + "' for " + name);
-  }
-}
-
-std::uint64_t count(const YAML::Node& node, const std::string& name) {
-  const double v = scalar<double>(node, name);  // accepts 1e9
-  if (!(v >= 0) || v > 1.8e19 || v != std::floor(v)) fail(name + " must be a non-negative integer");
-  return static_cast<std::uint64_t>(v);
+void parse_stop(const YAML::Node& st, StopRules& stop) {
+  check_keys(st, {"relative_gap", "pressure", "max_events", "max_collisions", "max_seconds"},
+             "effects.stop");
+  if (st["relative_gap"])
+    stop.relative_gap = scalar<double>(st["relative_gap"], "stop.relative_gap");
+  if (st["pressure"]) stop.pressure = scalar<double>(st["pressure"], "stop.pressure");
+  if (st["max_events"]) stop.max_events = count(st["max_events"], "stop.max_events");
+  if (st["max_collisions"])
+    stop.max_collisions = count(st["max_collisions"], "stop.max_collisions");
+  if (st["max_seconds"]) stop.max_seconds = scalar<double>(st["max_seconds"], "stop.max_seconds");
 }
 
 // Smallest distance among points in the unit triangle: no packing of n >= 2 beats Oler's bound
@@ -166,27 +194,15 @@ void validate_scene(const Scene& s) {
          std::to_string(s.points.size()) + " points");
   if (!s.velocities.empty() && static_cast<int>(s.velocities.size()) != s.n)
     fail("velocities must have n entries");
-  if (s.growth && !(s.growth->rate >= 0 && std::isfinite(s.growth->rate)))
-    fail("growth rate must be finite and >= 0");
-  if (s.growth)
-    for (const auto& st : s.growth->schedule) {
-      if (!(st.gap > 0 && st.gap < 1)) fail("growth.schedule gap must be in (0, 1)");
-      if (!(st.rate > 0 && std::isfinite(st.rate)))
-        fail("growth.schedule rate must be finite and > 0");
-    }
-  if (s.shake && s.shake->per_disk == 0) fail("shake.per_disk must be at least 1");
-  if (s.shake && !(s.shake->rattler_factor > 1 && std::isfinite(s.shake->rattler_factor)))
-    fail("shake.rattler_factor must be finite and > 1");
+  validate_effects(SceneEffects{}, s);
   const auto& st = s.stop;
   if (!(st.relative_gap > 0 && st.relative_gap < 1)) fail("stop.relative_gap must be in (0, 1)");
   if (st.pressure != 0 && !(st.pressure > 2 && std::isfinite(st.pressure)))
     fail("stop.pressure must be > 2 (the reduced pressure of a gas is about 2)");
   if (!(st.max_seconds > 0)) fail("stop.max_seconds must be > 0");
   if (st.max_events == 0) fail("stop.max_events must be > 0");
-  for (int i : s.pinned)
-    if (i < 0 || i >= s.n) fail("pinned index " + std::to_string(i) + " out of range");
   // Random points start at diameter 0: without growth nothing would ever happen until max_seconds.
-  if (s.points.empty() && !(s.growth && s.growth->rate > 0))
+  if (s.points.empty() && !grows(SceneEffects{}, s))
     fail("a random start has disks of diameter 0: it needs growth with a rate > 0");
   if (s.points.empty()) return;
   if (!(s.start_d >= 0 && std::isfinite(s.start_d))) fail("initial d must be finite and >= 0");
@@ -233,80 +249,19 @@ Scene parse_scene(const std::string& text, const std::string& base_dir) {
     else if (!s.pattern)
       fail("n is missing");
     if (const auto fx = root["effects"]; fx && !fx.IsNull()) {
-      check_keys(fx, {"growth", "thermostat", "shake", "pinned", "stop"}, "effects");
-      if (const auto g = fx["growth"]) {
-        s.growth = GrowthEffect{};
-        if (!g.IsNull()) {
-          check_keys(g, {"rate", "schedule"}, "effects.growth");
-          if (g["rate"]) s.growth->rate = scalar<double>(g["rate"], "growth.rate");
-          if (const auto sch = g["schedule"]) {
-            if (!sch.IsSequence()) fail("growth.schedule must be a list of {pressure|gap, rate}");
-            for (const auto& step : sch) {
-              check_keys(step, {"pressure", "gap", "rate"}, "a growth.schedule step");
-              if (!step["rate"] || (!step["pressure"] == !step["gap"]))
-                fail("a growth.schedule step needs rate and one of pressure or gap");
-              GrowthStep st;
-              st.rate = scalar<double>(step["rate"], "growth.schedule rate");
-              if (step["gap"]) {
-                st.gap = scalar<double>(step["gap"], "growth.schedule gap");
-              } else {
-                const double p = scalar<double>(step["pressure"], "growth.schedule pressure");
-                if (!(p > 2 && std::isfinite(p))) fail("growth.schedule pressure must be > 2");
-                st.gap = 2 / p;  // free-volume estimate: 1 - D/D_jam = 2 / p
-              }
-              s.growth->schedule.push_back(st);
-            }
-            std::stable_sort(
-                s.growth->schedule.begin(), s.growth->schedule.end(),
-                [](const GrowthStep& a, const GrowthStep& b) { return a.gap > b.gap; });
-          }
-        }
-      }
-      if (const auto sh = fx["shake"]) {
-        s.shake = ShakeEffect{};
-        if (!sh.IsNull()) {
-          check_keys(sh, {"per_disk", "rattler_factor"}, "effects.shake");
-          if (sh["per_disk"]) s.shake->per_disk = count(sh["per_disk"], "shake.per_disk");
-          if (sh["rattler_factor"])
-            s.shake->rattler_factor = scalar<double>(sh["rattler_factor"], "shake.rattler_factor");
-        }
-      }
-      if (const auto t = fx["thermostat"]) {
-        s.thermostat = ThermostatEffect{};
-        if (!t.IsNull()) {
-          check_keys(t, {"every"}, "effects.thermostat");
-          if (t["every"]) s.thermostat->every = count(t["every"], "thermostat.every");
-        }
-      }
-      if (const auto p = fx["pinned"]) {
-        if (!p.IsSequence()) fail("effects.pinned must be a list of disk indices");
-        for (const auto& i : p) s.pinned.push_back(scalar<int>(i, "a pinned index"));
-      }
-      if (const auto st = fx["stop"]) {
-        check_keys(st, {"relative_gap", "pressure", "max_events", "max_collisions", "max_seconds"},
-                   "effects.stop");
-        if (st["relative_gap"])
-          s.stop.relative_gap = scalar<double>(st["relative_gap"], "stop.relative_gap");
-        if (st["pressure"]) s.stop.pressure = scalar<double>(st["pressure"], "stop.pressure");
-        if (st["max_events"]) s.stop.max_events = count(st["max_events"], "stop.max_events");
-        if (st["max_collisions"])
-          s.stop.max_collisions = count(st["max_collisions"], "stop.max_collisions");
-        if (st["max_seconds"])
-          s.stop.max_seconds = scalar<double>(st["max_seconds"], "stop.max_seconds");
-      }
+      parse_effects(SceneEffects{}, fx, s);
+      if (const auto st = fx["stop"]) parse_stop(st, s.stop);
     }
   } catch (const YAML::Exception& e) {
     fail("bad scene at line " + std::to_string(e.mark.line + 1));
   }
   if (!s.pattern) validate_scene(s);  // else once the caller has built the points
-  // Growth without velocity rescaling pumps kinetic energy into every collision: measured at
-  // n = 10, 22, 40 and 60, such runs never reach their stop gap (15 M events in 2 s, stuck near
-  // jamming) and end only at max_seconds. A YAML scene must name the thermostat with growth.
-  if (s.growth && !s.thermostat && s.stop.max_collisions == 0)
-    fail(
-        "growth needs a thermostat (add `thermostat: {}`): without rescaling the kinetic energy "
-        "grows at every collision and the run never reaches its stop gap");
+  check_effects_after_parse(SceneEffects{}, s);
   return s;
+}
+
+std::vector<std::string> describe_effects(const Scene& scene) {
+  return describe(SceneEffects{}, scene);
 }
 
 Scene load_scene(const std::string& path) {

@@ -21,6 +21,8 @@
 // (app/: resolve_pattern) before validate_scene.
 // Points of a file or of `points` follow the Packing convention: centres in the unit triangle with
 // minimum distance d (the default d is the points' own minimum distance, so they may touch).
+// Each effect's data is a field of Scene below; its policy (sim/effects/*.hpp, listed in
+// sim/effect_list.hpp) reads, checks and describes it and hooks it into the engine.
 #pragma once
 
 #include <cstdint>
@@ -106,6 +108,9 @@ Scene load_scene(const std::string& path);
 // Checks n, indices, stop rules, the start points (inside the triangle, no pair closer than
 // start_d beyond 1e-12 relative). Throws a one-line std::runtime_error.
 void validate_scene(const Scene& scene);
+
+// One line per effect the scene uses, as each effect describes itself (for reports).
+std::vector<std::string> describe_effects(const Scene& scene);
 
 // A Packing as a scene start: its points at its own d. Without `growth_rate` the scene names no
 // effect (an elastic gas that never jams); with it, growth at that rate plus the thermostat.

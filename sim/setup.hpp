@@ -1,29 +1,41 @@
-// The billiards engine's interface inside sim/: its input (Setup) and the entry point that picks
-// the engine compiled for a run's effects. Separate from sim/engine.hpp so that the code around
-// the engine (sim/billiards.cpp, sim/effects.cpp) can start runs without including the engine
-// template, which only the dispatcher's translation unit instantiates.
+// The billiards engine's input inside sim/: the start state (Setup) and what the effects see of
+// the run being set up (RunStart). Separate from sim/engine.hpp so that the effects' headers can
+// make their per-run state without including the engine template, which only sim/billiards.cpp
+// instantiates.
 #pragma once
 
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "sim/billiards.hpp"
+#include "sim/scene.hpp"
 
 namespace tripack::sim_detail {
 
-// Everything the engine needs, already in container units.
+// The start state in container units and engine numbering; the effects bring the rest.
 struct Setup {
   std::vector<Vec2> x, v;
-  std::vector<char> pinned;
-  double diam0 = 0, rate = 0, diam_cap = 0;
-  std::vector<GrowthStep> schedule;  // by decreasing gap
-  std::uint64_t thermostat_every = 0;
+  double diam0 = 0, diam_cap = 0;
   StopRules stop;
 };
 
-// A run of the engine compiled for exactly the effects it needs: growth (G), thermostat (T),
-// pinned disks (P), or shaking (the shaking engine never grows). Defined in sim/billiards.cpp.
-BilliardsResult run_engine_for(bool G, bool T, bool P, bool shaking, Setup s,
-                               const BilliardsOptions& o);
+// A run being set up, as the effects' for_run and after_run see it.
+struct RunStart {
+  const Scene& scene;
+  // order[k]: the scene index of the disk the engine calls k (a Z-order numbering).
+  std::vector<int> order;
+  double diam_cap = 0;  // the largest diameter possible (Oler's bound)
+  std::mt19937_64& rng;
+  const BilliardsOptions& options;
+
+  // Per-disk values from engine to scene numbering.
+  template <class T>
+  std::vector<T> to_scene_numbering(const std::vector<T>& v) const {
+    std::vector<T> out(order.size());
+    for (std::size_t k = 0; k < order.size(); ++k) out[std::size_t(order[k])] = v[k];
+    return out;
+  }
+};
 
 }  // namespace tripack::sim_detail

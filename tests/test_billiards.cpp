@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -538,6 +539,178 @@ TEST(Billiards, BadScenesGiveOneLineErrors) {
   Scene s = default_scene(0);
   std::mt19937_64 rng(1);
   EXPECT_THROW(run_billiards(s, rng), std::runtime_error);
+}
+
+// Refactor equivalence: the engine's end state for fixed scenes and seeds, one scene per
+// combination of effects (and the all-effects-compiled-in option). The expected values were
+// produced by the engine before the effects became policy types (commit 3a1d470, the old
+// Engine<kGrowth, kThermostat, kPinned, kTrack>); any change of the event sequence, however
+// small, changes the events, the diameter's last bits or the state hash.
+std::uint64_t state_hash(const BilliardsResult& r) {
+  std::uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a over the bit patterns
+  const auto mix = [&](double x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    for (int b = 0; b < 64; b += 8) h = (h ^ ((bits >> b) & 0xff)) * 0x100000001b3ull;
+  };
+  for (const auto& x : r.positions) mix(x.x), mix(x.y);
+  for (const auto& v : r.velocities) mix(v.x), mix(v.y);
+  for (double e : r.excursion) mix(e);
+  for (std::uint64_t hits : r.shake_hits) mix(static_cast<double>(hits));
+  return h;
+}
+
+struct EquivalenceCase {
+  const char* name;
+  std::uint64_t seed;
+  double diameter;  // hexadecimal: bit for bit
+  std::uint64_t events, collisions;
+  std::uint64_t hash;
+  const char* stop_reason;
+};
+
+Scene equivalence_scene(const std::string& name, BilliardsOptions& o) {
+  if (name == "growth+thermostat") return default_scene(22);
+  if (name == "growth schedule") return default_scene(60);
+  if (name == "growth+thermostat+pinned") {
+    Scene s = default_scene(12);
+    s.pinned = {0, 5};
+    return s;
+  }
+  if (name == "growth+thermostat+shake") {
+    Scene s = default_scene(22);
+    s.shake = ShakeEffect{};
+    return s;
+  }
+  if (name == "growth" || name == "growth, all effects compiled in") {
+    Scene s = default_scene(40);
+    s.thermostat.reset();
+    s.stop.max_events = 200'000;
+    o.all_policies = name != "growth";
+    return s;
+  }
+  if (name == "growth+pinned") {
+    Scene s = default_scene(30);
+    s.thermostat.reset();
+    s.pinned = {2, 9};
+    s.stop.max_events = 100'000;
+    return s;
+  }
+  if (name == "growth+pinned in a corner") {  // growth stops when the pinned disk touches
+    Scene s = parse_scene(R"(
+n: 3
+initial: {points: [[0, 0], [1, 0], [0.5, 0.8660254037844386]], d: 0.5}
+effects: {growth: {rate: 0.02}, thermostat: {every: 50}, pinned: [1]}
+)");
+    s.thermostat.reset();
+    return s;
+  }
+  Scene s = random_start(30, 3, 0.9L);  // the rest start from points, without growth
+  s.stop.max_collisions = 20'000;
+  if (name.find("thermostat") != std::string::npos) s.thermostat = ThermostatEffect{50};
+  if (name.find("pinned") != std::string::npos) {
+    s.pinned = {3, 17};
+    s.stop.max_events = 20'000;
+  }
+  return s;
+}
+
+TEST(Billiards, SameEndStateAsBeforeTheEffectPolicies) {
+  const EquivalenceCase cases[] = {
+      {"growth+thermostat", 1, 0x1.1611ff4df7c14p-3, 62000, 54760, 0xd1375708eca54b40ull,
+       "relative gap reached"},
+      {"growth schedule", 2, 0x1.654a0ac186503p-4, 230000, 209383, 0x289b147b1fe232fbull,
+       "relative gap reached"},
+      {"growth+thermostat+pinned", 5, 0x1.1119687d4d65ep-4, 1776, 249, 0x15c14430ccb8a772ull,
+       "pinned disks touch"},
+      {"growth+thermostat+shake", 1, 0x1.1611ff4df7c14p-3, 62000, 54760, 0xc5c476745b3a9596ull,
+       "relative gap reached"},
+      {"growth", 4, 0x1.a9bf8e1d98188p-4, 200000, 178238, 0x4e2ce9c5b3cef50bull, "max events"},
+      {"growth, all effects compiled in", 4, 0x1.a9bf8e1d98188p-4, 200000, 178238,
+       0x4e2ce9c5b3cef50bull, "max events"},
+      {"growth+pinned", 6, 0x1.b4c499d22128p-4, 100000, 85931, 0xaeba7853b8261ec2ull, "max events"},
+      {"growth+pinned in a corner", 1, 0x1.126145e9ecd56p-2, 2, 2, 0x6f71431c8c698c97ull,
+       "pinned disks touch"},
+      {"elastic", 4, 0x1.c0d7558ccd69fp-4, 21895, 20000, 0x3d08afe43d8a4749ull, "max collisions"},
+      {"thermostat", 4, 0x1.c0d7558ccd69fp-4, 21892, 20000, 0xa0feff5eff3b92f9ull,
+       "max collisions"},
+      // Pinned disks without growth: values after the exit_time fix (a disk at rest in its
+      // neighbourhood never leaves it); the old engine processed 20000 updates of the pinned
+      // disks at time 0 and no collision here (Billiards.PinnedDisksWithoutGrowthLetTheOthersMove).
+      {"pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 18439, 0x5d9d81fe1d21b1d1ull, "max events"},
+      {"thermostat+pinned", 4, 0x1.c0d7558ccd69fp-4, 20000, 18433, 0xd211f04a929c60fcull,
+       "max events"},
+  };
+  for (const auto& c : cases) {
+    BilliardsOptions o;
+    const Scene s = equivalence_scene(c.name, o);
+    std::mt19937_64 rng(c.seed);
+    const BilliardsResult r = run_billiards(s, rng, o);
+    EXPECT_EQ(static_cast<double>(r.diameter), c.diameter) << c.name;
+    EXPECT_EQ(r.events, c.events) << c.name;
+    EXPECT_EQ(r.collisions, c.collisions) << c.name;
+    EXPECT_EQ(state_hash(r), c.hash) << c.name;
+    EXPECT_EQ(r.stop_reason, c.stop_reason) << c.name;
+  }
+}
+
+// Each effect describes itself for the reports (sim/effects/*.hpp), in the effect list's order,
+// and only when the scene uses it.
+TEST(Billiards, EffectsDescribeThemselves) {
+  const Scene s = parse_scene(R"(
+n: 22
+effects:
+  growth: {rate: 0.01, schedule: [{pressure: 1e3, rate: 0.005}]}
+  thermostat: {}
+  shake: {per_disk: 300}
+  pinned: [4, 7]
+)");
+  const std::vector<std::string> expected{
+      "growth at rate 0.01, 0.005 below an estimated gap of 0.002",
+      "thermostat every 10 n = 220 collisions",
+      "shake 300 collisions per disk (rattlers: 20x fewer than the median disk)",
+      "pinned disks 4 7"};
+  EXPECT_EQ(describe_effects(s), expected);
+  Scene plain = s;
+  plain.shake.reset();
+  plain.pinned.clear();
+  plain.thermostat = ThermostatEffect{50};
+  EXPECT_EQ(describe_effects(plain).back(), "thermostat every 50 collisions");
+  EXPECT_TRUE(describe_effects(scene_from_packing(Packing{{{0, 0}}, 1})).empty());
+}
+
+// A disk at rest in a neighbourhood that does not shrink (a pinned disk without growth) never
+// leaves it. exit_time read that never as now, so such a disk had an update event at the same
+// time over and over: an elastic run with pinned disks did nothing but those until max_events,
+// and shaking with pinned disks (always elastic) never collided.
+TEST(Billiards, PinnedDisksWithoutGrowthLetTheOthersMove) {
+  Scene s = random_start(30, 3, 0.9L);
+  s.pinned = {3, 17};
+  s.stop.max_collisions = 20'000;
+  std::mt19937_64 rng(4);
+  const BilliardsResult r = run_billiards(s, rng);
+  EXPECT_EQ(r.stop_reason, "max collisions");
+  EXPECT_EQ(r.collisions, 20'000u);
+  EXPECT_LT(r.events, 30'000u);
+  EXPECT_LE(r.max_overlap, 1e-12);
+  for (int i : s.pinned) {  // (to the rounding of the container <-> Packing mapping)
+    EXPECT_NEAR(double(r.packing.points[std::size_t(i)].x), double(s.points[std::size_t(i)].x),
+                1e-15)
+        << i;
+    EXPECT_NEAR(double(r.packing.points[std::size_t(i)].y), double(s.points[std::size_t(i)].y),
+                1e-15)
+        << i;
+  }
+  Scene shaken = random_start(30, 3, 0.9L);
+  shaken.pinned = {3, 17};
+  shaken.shake = ShakeEffect{50, 20};
+  std::mt19937_64 rng2(4);
+  const BilliardsResult sh = run_billiards(shaken, rng2);
+  EXPECT_EQ(sh.stop_reason, "shake only");
+  EXPECT_EQ(sh.shake_collisions, 50u * 30u);
+  EXPECT_EQ(sh.excursion[3], 0.0);  // the pinned disks are hit but never move
+  EXPECT_EQ(sh.excursion[17], 0.0);
+  EXPECT_GT(sh.excursion[0], 0.0);
+  EXPECT_LT(sh.shake_seconds, 5.0);
 }
 
 }  // namespace

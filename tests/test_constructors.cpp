@@ -5,6 +5,8 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <set>
+#include <stdexcept>
 
 #include "analysis/compare.hpp"
 #include "constructors/builders.hpp"
@@ -444,6 +446,88 @@ TEST(Scale, LargeMatrixMembers) {
     EXPECT_EQ(static_cast<long long>(pat.bonds.size()), *catalogue().bonds_of(c, k, p, ""));
     EXPECT_EQ(static_cast<long>(pat.rattlers.size()), p - 1);
   }
+}
+
+// The builder table (constructors/registry.hpp): builders are found by their classes.yaml name,
+// each registered from its own file. This file registers one more, as a new builder would: a
+// BuilderRegistration constant in the builder's file and a class naming it in the catalogue.
+Pattern build_two_disks(const BuilderCall& call) {
+  Pattern pat;
+  pat.packing.d = 1;
+  pat.packing.points = {{0, 0}, {1, 0}};
+  pat.rattlers = {static_cast<int>(call.k) - 1};  // shows the call's arguments arrive
+  return pat;
+}
+const BuilderRegistration kTwoDisks{"test-two-disks", build_two_disks};
+
+std::string catalogue_error(const Catalogue& c, const BuildRequest& request) {
+  try {
+    build_pattern(c, request);
+  } catch (const CatalogueError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no CatalogueError for " << request.class_id;
+  return "";
+}
+
+TEST(Registry, EveryCatalogueBuilderIsRegisteredAndEveryBuiltInOneIsUsed) {
+  std::set<std::string> named;
+  for (const auto& c : catalogue().classes()) {
+    named.insert(c.builder);
+    EXPECT_NE(find_builder(c.builder), nullptr) << c.id << ": " << c.builder;
+  }
+  std::set<std::string> registered;
+  for (const auto& name : registered_builders())
+    if (name != "test-two-disks") registered.insert(name);
+  EXPECT_EQ(registered, named);
+  EXPECT_EQ(find_builder("no-such-builder"), nullptr);
+}
+
+TEST(Registry, ANewBuilderIsItsRegistrationAndACatalogueEntry) {
+  const Catalogue c = Catalogue::parse(
+      "classes:\n  - {id: pair, display: two disks, n: '2', k_max: 3, builder: {name: "
+      "test-two-disks}}\n");
+  const Pattern pat = build_pattern(c, {"pair", 3, 0, ""});
+  EXPECT_EQ(pat.packing.size(), 2u);
+  EXPECT_EQ(pat.rattlers, std::vector<int>{2});
+  EXPECT_EQ(pat.provenance.class_id, "pair");
+  EXPECT_EQ(pat.provenance.k, 3);
+}
+
+TEST(Registry, UnknownBuilderOrMissingArgumentIsAOneLineCatalogueError) {
+  const Catalogue c = Catalogue::parse(
+      "classes:\n"
+      "  - {id: a, display: A, n: 'k', builder: {name: nosuch}}\n"
+      "  - {id: b, display: B, n: 'k', builder: {name: chain-family, q: 'k', block: '1'}}\n");
+  const std::string unknown = catalogue_error(c, {"a", 1, 0, ""});
+  EXPECT_NE(unknown.find("a: unknown builder 'nosuch'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("four-delta"), std::string::npos) << unknown;  // the known ones
+  const std::string missing = catalogue_error(c, {"b", 2, 0, ""});
+  EXPECT_NE(missing.find("needs argument 'separator'"), std::string::npos) << missing;
+}
+
+// Variants and builder arguments reach the builders: the twin's cavity-m, the chain family's
+// (q, block, separator) and the odd ripple's two modifications, as the direct calls build them.
+TEST(Registry, VariantsAndArgumentsReachTheBuilders) {
+  const auto same = [](const Pattern& a, const Pattern& b) {
+    EXPECT_EQ(a.packing.points, b.packing.points);
+    EXPECT_EQ(a.packing.d, b.packing.d);
+    EXPECT_EQ(a.rattlers, b.rattlers);
+  };
+  same(build("twin", 3, 0, "cavity-2", false), build_twin(3, 2));
+  same(build("twin", 3, 0, "full", false), build_twin(3, 3));
+  same(build("twin", 3, 0, "rattler", false), build_twin(3, 0));
+  same(build("matrix", 2, 3, "", false), build_chain_family({3, 2, 1}));
+  same(build("odd-ripple", 4, 0, "other", false), build_odd_ripple_other(4));
+  same(build("odd-ripple", 4, 0, "depressed", false), build_odd_ripple_depressed(4));
+}
+
+// The table is read-only once anything has been looked up: a late registration is refused.
+TEST(Registry, RegistrationAfterTheFirstLookupIsRefused) {
+  ASSERT_NE(find_builder("four-delta"), nullptr);
+  EXPECT_THROW(BuilderRegistration("test-late", build_two_disks), std::logic_error);
+  EXPECT_EQ(find_builder("test-late"), nullptr);
 }
 
 }  // namespace
