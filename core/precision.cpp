@@ -49,9 +49,10 @@ std::string PreciseReal::round_text(int wanted) const {
   }
   while (digits.size() < integer) digits += '0';  // rounded within the integer part
   std::string out = digits.substr(0, integer);
-  if (digits.size() > integer) out += "." + digits.substr(integer);
-  if (out.empty() || out[0] == '.') out = "0" + out;
-  return negative ? "-" + out : out;
+  if (out.empty()) out.push_back('0');  // (push_back/append: GCC 12 -Wrestrict false positive on +)
+  if (digits.size() > integer) out.append(1, '.').append(digits, integer);
+  if (negative) out.insert(out.begin(), '-');
+  return out;
 }
 
 }  // namespace tripack
