@@ -40,12 +40,14 @@ std::string PreciseReal::round_text(int wanted) const {
   if (up) {
     std::size_t i = digits.size();
     while (i > 0 && digits[i - 1] == '9') digits[--i] = '0';
+    bool longer = i <= first;  // 0.999.. -> 1.000..: one significant digit more than asked
     if (i == 0) {
       digits.insert(digits.begin(), '1');
       ++integer;
     } else {
       ++digits[i - 1];
     }
+    if (longer && digits.size() > integer) digits.pop_back();
   }
   while (digits.size() < integer) digits += '0';  // rounded within the integer part
   std::string out = digits.substr(0, integer);

@@ -304,3 +304,26 @@ TEST(Io, JsonShapes) {
 
 }  // namespace
 }  // namespace tripack
+
+namespace tripack {
+namespace {
+
+// PreciseReal rounds its decimal text half up to the digits asked for (decimal arithmetic by
+// hand: 0.19999951 -> 0.200000 at 6 digits; 9.9996 -> 10.000 at 5; -0.00123456 -> -0.00123 at 3).
+TEST(PreciseReal, RoundsItsTextHalfUpAndNeverClaimsMoreDigitsThanItHas) {
+  EXPECT_EQ(PreciseReal(0.2L, "0.19999951000000000000000", 23).str(20), "0.19999951000000000000");
+  EXPECT_EQ(PreciseReal(10, "9.9996000000000000000000", 23).str(19), "9.999600000000000000");
+  EXPECT_EQ(PreciseReal(0.2L, "0.1999995100000000000000000000", 28).str(6 + kLongDoubleDigits),
+            "0.199999510000000000000000");
+  EXPECT_EQ(PreciseReal(-0.001L, "-0.001234560000000000000000", 24).str(21),
+            "-0.00123456000000000000000");
+  EXPECT_EQ(PreciseReal(1, "0.999999999999999999999999999999", 30).str(20),
+            "1.0000000000000000000");
+  // More digits than known: what is known, not more.
+  EXPECT_EQ(PreciseReal(0.5L, "0.50000000000000000000001", 23).str(40), "0.50000000000000000000001");
+  EXPECT_EQ(PreciseReal(0.25L).str(30), format_significant(0.25L, kLongDoubleDigits));
+  EXPECT_EQ(significant_digits("-0.000120"), 3);
+}
+
+}  // namespace
+}  // namespace tripack
