@@ -3,40 +3,38 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
-#include <mutex>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 
-#include "campaign/atlas.hpp"
-#include "campaign/atlas_files.hpp"
-#include "campaign/campaign.hpp"
-#include "campaign/import.hpp"
-#include "campaign/stored.hpp"
+#include "jobs/atlas.hpp"
+#include "jobs/atlas_files.hpp"
+#include "jobs/campaign.hpp"
+#include "jobs/import.hpp"
+#include "jobs/stored.hpp"
 #include "report/formats.hpp"
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
-#include "pipeline/compare.hpp"
-#include "pipeline/explore.hpp"
+#include "jobs/compare.hpp"
+#include "jobs/explore.hpp"
 #include "core/timing.hpp"
 #include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
 #include "report/fields.hpp"
+#include "report/progress_line.hpp"
+#include "jobs/ranks.hpp"
 #include "report/packing_file.hpp"
 #include "report/plot.hpp"
 
@@ -93,84 +91,36 @@ bool progress_wanted(const OutputOptions& out) {
   return !out.json && !out.csv && isatty(fileno(stderr));
 }
 
-// A live line on a terminal for long searches.
-std::function<void(const pipeline::SearchProgress&)> search_progress_line(int n) {
-  return [n](const pipeline::SearchProgress& p) {
-    if (p.live)
-      std::cerr << fmt::format(
-          "\rbilliards n={}: {}/{} runs done; run {}: {:.3g} events, {:.2f} M events/s, d = "
-          "{:.10Lg}, gap ~{:.1e}      ",
-          n, p.runs_done, p.runs, p.run, static_cast<double>(p.live->events),
-          p.live->seconds > 0 ? static_cast<double>(p.live->events) / p.live->seconds / 1e6 : 0.0,
-          d_from_diameter(p.live->diameter), p.live->relative_gap);
-    else
-      std::cerr << fmt::format(
-          "\rbilliards n={}: {}/{} runs, last d = {:.12Lg}, {:.2f} M events/s      ", n,
-          p.runs_done, p.runs, p.finished_d.value_or(0), p.events_per_second / 1e6);
-    std::cerr << std::flush;
-  };
+// The progress line of a command whose result goes to stdout: on a terminal, and only when the
+// result is text (a JSON or CSV consumer reads stderr apart, but a tty wants one clean line).
+report::ProgressLineOptions terminal_line(std::string job, const OutputOptions& out,
+                                          double quiet_seconds = 0) {
+  report::ProgressLineOptions options;
+  options.job = std::move(job);
+  options.terminal = progress_wanted(out);
+  options.quiet_seconds = quiet_seconds;
+  return options;
 }
 
-// A live line on a terminal for an analysis or build that has run over 2 s: the elapsed time,
-// the stage, its step and d, redrawn five times a second by a ticker thread (one stage can
-// last long without reporting: the LP-free certificate of 4Delta(224) takes 14 s). Shorter runs
-// print nothing. finish() stops the ticker and ends the line.
-class StageProgressLine {
- public:
-  explicit StageProgressLine(std::string what) : what_(std::move(what)) {}
-  ~StageProgressLine() { finish(); }
-  pipeline::AnalysisProgressFn callback() {
-    if (!ticker_.joinable()) ticker_ = std::thread([this] { tick(); });
-    return [this](const pipeline::AnalysisProgress& p) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      latest_ = p;
-    };
-  }
-  void finish() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (stopped_) return;
-      stopped_ = true;
-    }
-    wake_.notify_all();
-    if (ticker_.joinable()) ticker_.join();
-    if (width_ > 0) std::cerr << "\n";
-  }
+// A long job's progress: redrawn on a terminal; in a log, the lines `log` asks for.
+report::ProgressLineOptions job_line(std::string job, long long log_every, bool log_stages) {
+  report::ProgressLineOptions options;
+  options.job = std::move(job);
+  options.terminal = isatty(fileno(stderr));
+  options.log_every = log_every;
+  options.log_stages = log_stages;
+  return options;
+}
 
- private:
-  void tick() {
-    std::unique_lock<std::mutex> lock(mutex_);
-    while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stopped_; })) {
-      const double now = seconds_since(start_);
-      if (now < 2) continue;
-      std::string line = fmt::format("\r{}: {:.1f} s, {}", what_, now, latest_.stage);
-      if (latest_.step > 0) line += fmt::format(" step {}", latest_.step);
-      if (latest_.d > 0) line += fmt::format(", d = {:.15Lg}", latest_.d);
-      const std::size_t length = line.size();
-      line.append(width_ > length ? width_ - length : 0, ' ');
-      width_ = length;
-      std::cerr << line << std::flush;
-    }
-  }
-  std::string what_;
-  Clock::time_point start_ = Clock::now();
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  pipeline::AnalysisProgress latest_;
-  bool stopped_ = false;
-  std::size_t width_ = 0;
-  std::thread ticker_;
-};
-
-pipeline::BilliardsSearch search_from(const GlobalOptions& g, const BilliardsCommandOptions& o) {
-  pipeline::BilliardsSearch search;
+jobs::BilliardsSearch search_from(const GlobalOptions& g, const BilliardsCommandOptions& o) {
+  jobs::BilliardsSearch search;
   search.scene = o.scene.empty() ? default_scene(static_cast<int>(o.n)) : load_scene(o.scene);
-  pipeline::prepare_scene(load_catalogue(g), search.scene, o.n);
+  jobs::prepare_scene(load_catalogue(g), search.scene, o.n);
   search.runs = o.runs;
   search.seed = o.seed;
   search.threads = o.threads;
   search.certify = o.certify;
-  if (progress_wanted(o.out)) search.progress = search_progress_line(search.scene.n);
+  search.cancel = g.cancel;
   return search;
 }
 
@@ -193,7 +143,7 @@ std::filesystem::path prepare_output_dir(const BilliardsCommandOptions& o) {
   return writable_directory(o.output_dir);
 }
 
-void write_distinct_packings(const pipeline::BilliardsSearchResult& result,
+void write_distinct_packings(const jobs::BilliardsSearchResult& result,
                              const std::filesystem::path& dir, const std::string& format) {
   const std::string extension = find_format(format)->extensions.front();
   for (const auto& x : result.packings)
@@ -236,9 +186,9 @@ int cmd_classify(const GlobalOptions& g, long long n, const OutputOptions& out) 
 
 int cmd_build(const GlobalOptions& g, const BuildOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
-  StageProgressLine progress("build");
-  pipeline::BuildSettings settings{o.digits, o.polish, o.certify, {}};
-  if (progress_wanted(o.out)) settings.progress = progress.callback();
+  // Builds over 2 s show their stage (the LP-free certificate of 4Delta(224) takes 14 s).
+  report::ProgressLine progress(std::cerr, terminal_line("build", o.out, 2));
+  pipeline::BuildSettings settings{o.digits, o.polish, o.certify, progress.callback()};
   pipeline::BestBuild result;
   if (o.n) {
     if (!o.class_id.empty() || o.k != kUnsetK || o.p)
@@ -286,8 +236,8 @@ int cmd_analyze(const AnalyzeOptions& o) {
   request.digits = o.digits;
   if (o.n) request.expected_n = o.n;
   request.lp_any_size = o.lp_any_size;
-  StageProgressLine progress("analyze");
-  if (progress_wanted(o.out)) request.progress = progress.callback();
+  report::ProgressLine progress(std::cerr, terminal_line("analyze", o.out, 2));
+  request.progress = progress.callback();
   const auto result = pipeline::analyze_file(request);
   progress.finish();
   for (const auto& warning : result.warnings) std::cerr << "tripack: warning: " << warning << "\n";
@@ -302,9 +252,12 @@ int cmd_analyze(const AnalyzeOptions& o) {
 int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   if (o.n == 0 && o.scene.empty()) throw std::invalid_argument("billiards needs N or --scene FILE");
   const auto dir = o.output_dir.empty() ? std::filesystem::path() : prepare_output_dir(o);
-  const auto search = search_from(g, o);
-  const auto result = pipeline::search_billiards(search);
-  if (search.progress) std::cerr << "\n";
+  auto search = search_from(g, o);
+  report::ProgressLine progress(std::cerr,
+                                terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
+  search.progress = progress.callback();
+  const auto result = jobs::search_billiards(search);
+  progress.finish();
   // Files first: what was found is kept even if printing fails.
   if (!dir.empty()) write_distinct_packings(result, dir, o.file_format);
   print_result(result, o.out);
@@ -312,55 +265,25 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
     const auto& best = result.packings.front();
     draw_if_asked(o.diagrams, best.pattern, best.label, best.forces);
   }
-  return 0;
+  return result.runs.size() < static_cast<std::size_t>(result.runs_asked) ? 130 : 0;
 }
 
 int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   if (o.n < 2) throw std::invalid_argument("compare needs N >= 2");
   const Catalogue catalogue = load_catalogue(g);
   auto search = search_from(g, o);
-  const auto result = pipeline::compare_constructed(catalogue, o.n, search, {});
-  if (search.progress) std::cerr << "\n";
+  report::ProgressLine progress(std::cerr,
+                                terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
+  search.progress = progress.callback();
+  const auto result = jobs::compare_constructed(catalogue, o.n, search, {});
+  progress.finish();
   print_result(result, o.out);
   return 0;
 }
 
-namespace {
-
-// Ctrl-C asks the explorer to stop between items; a second Ctrl-C ends the program at once.
-std::atomic<bool> explore_cancel{false};
-extern "C" void on_interrupt(int) {
-  if (explore_cancel.exchange(true)) std::_Exit(130);
-}
-
-// A progress bar with ETA on a terminal; elsewhere one line per stage.
-std::function<void(const pipeline::ExploreProgress&)> explore_progress_line() {
-  const bool tty = isatty(fileno(stderr));
-  return [tty, last_stage = std::string()](const pipeline::ExploreProgress& p) mutable {
-    if (!tty) {
-      if (p.stage != last_stage)
-        std::cerr << fmt::format("explore: {} ({:.0f} s)\n", p.stage, p.elapsed);
-      last_stage = p.stage;
-      return;
-    }
-    const int width = 30;
-    const int filled = static_cast<int>(p.fraction * width + 0.5);
-    const double eta = p.fraction > 0.02 ? p.elapsed * (1 - p.fraction) / p.fraction : -1;
-    std::cerr << fmt::format("\r[{}{}] {:3.0f}% {:>5.0f} s, ETA {:>5}  {}: {:<40.40}",
-                             std::string(static_cast<std::size_t>(filled), '#'),
-                             std::string(static_cast<std::size_t>(width - filled), '.'),
-                             p.fraction * 100, p.elapsed,
-                             eta < 0 ? std::string("?") : fmt::format("{:.0f} s", eta), p.stage,
-                             p.item)
-              << std::flush;
-  };
-}
-
-}  // namespace
-
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
-  pipeline::ExploreSettings settings;
+  jobs::ExploreSettings settings;
   settings.max_n = o.max_n;
   settings.runs = o.runs;
   settings.threads = o.threads;
@@ -368,7 +291,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   settings.accuracy = o.accuracy;
   report::find_gnuplot();  // before any work: a missing gnuplot is one line, not a lost hour
   const std::filesystem::path dir = writable_directory(o.out);
-  const double estimate = pipeline::estimated_explore_seconds(catalogue, settings);
+  const double estimate = jobs::estimated_explore_seconds(catalogue, settings);
   if (estimate > 300)
     std::cerr << fmt::format(
         "tripack: warning: this exploration is estimated at ~{:.0f} minutes on 2 cores (the "
@@ -378,21 +301,20 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   std::optional<report::ExploreAtlas> atlas;
   const std::filesystem::path atlas_csv = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
   if (o.atlas != "none" && (!o.atlas.empty() || std::filesystem::exists(atlas_csv))) {
-    auto rows = campaign::read_atlas(atlas_csv);
+    auto rows = jobs::read_atlas(atlas_csv);
     std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
                              atlas_csv.string(), rows.size());
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
     atlas =
-        report::ExploreAtlas{atlas_csv, std::move(rows), campaign::load_atlas(atlas_csv, 1),
-                             std::filesystem::exists(gaps_csv) ? campaign::read_atlas_gaps(gaps_csv)
-                                                               : std::vector<campaign::AtlasGap>{}};
+        report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
+                             std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
+                                                               : std::vector<jobs::AtlasGap>{}};
   }
-  explore_cancel = false;
-  std::signal(SIGINT, on_interrupt);
+  const CancelToken never;
+  report::ProgressLine progress(std::cerr, job_line("explore", 0, true));
   const auto result =
-      pipeline::explore(catalogue, settings, explore_cancel, explore_progress_line());
-  std::signal(SIGINT, SIG_DFL);
-  if (isatty(fileno(stderr))) std::cerr << "\n";
+      jobs::explore(catalogue, settings, g.cancel ? *g.cancel : never, progress.callback());
+  progress.finish();
   report::ExploreReportOptions report_options;
   report_options.atlas = atlas ? &*atlas : nullptr;
   report::write_explore_report(result, dir, report_options, [](const std::string& what) {
@@ -407,7 +329,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
 
 int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
-  campaign::AtlasSettings settings;
+  jobs::AtlasSettings settings;
   // "A..B", "N" or a comma-separated list of them.
   settings.n_first = std::numeric_limits<long long>::max();
   settings.n_last = 0;
@@ -424,22 +346,11 @@ int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
   settings.digits = o.digits;
   settings.threads = o.threads;
   const std::filesystem::path dir = writable_directory(o.out);
-  const bool tty = isatty(fileno(stderr));
-  explore_cancel = false;
-  std::signal(SIGINT, on_interrupt);
-  const auto atlas = campaign::build_atlas(
-      catalogue, o.db, settings, &explore_cancel, [tty](const campaign::AtlasProgress& p) {
-        const std::string line =
-            fmt::format("atlas: n = {} done ({} of {}), {:.0f} s", p.n, p.done, p.total, p.elapsed);
-        if (tty)
-          std::cerr << "\r" << line << "\033[K" << std::flush;
-        else if (p.done % 20 == 0 || p.done == p.total)
-          std::cerr << line << "\n";
-      });
-  std::signal(SIGINT, SIG_DFL);
-  if (tty) std::cerr << "\n";
+  report::ProgressLine progress(std::cerr, job_line("atlas", 20, false));
+  const auto atlas = jobs::build_atlas(catalogue, o.db, settings, g.cancel, progress.callback());
+  progress.finish();
   if (atlas.interrupted) throw std::runtime_error("interrupted: nothing written");
-  campaign::write_atlas(atlas, dir);
+  jobs::write_atlas(atlas, dir);
   print_result(atlas, o.out_format);
   if (!atlas.errors.empty() || !atlas.missing.empty())
     throw std::runtime_error(fmt::format(
@@ -485,9 +396,9 @@ int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {
   return 0;
 }
 
-int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
+int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o) {
   const auto [first, last] = parse_range(o.n_range, "--n");
-  campaign::CampaignRequest request;
+  jobs::CampaignRequest request;
   request.n_first = first;
   request.n_last = last;
   request.runs = o.runs;
@@ -496,49 +407,25 @@ int cmd_campaign(const GlobalOptions&, const CampaignOptions& o) {
   request.db = o.db;
   if (!o.scene.empty()) request.scene = load_scene(o.scene);
   request.tool_version = "tripack " TRIPACK_VERSION;
-  const bool tty = isatty(fileno(stderr));
-  explore_cancel = false;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);       // mpirun passes a Ctrl-C on to the ranks as SIGTERM
-  std::map<long long, long double> best_d;  // best certified d per n found in this call
-  const auto result = campaign::run_campaign(
-      request, &explore_cancel, [tty, &best_d](const campaign::CampaignProgress& p) {
-        if (p.d > 0 && p.d > best_d[p.n]) best_d[p.n] = p.d;
-        const double eta = p.done > 0 ? p.elapsed / static_cast<double>(p.done) *
-                                            static_cast<double>(p.total - p.done)
-                                      : 0.0;
-        const auto best = best_d.find(p.n);
-        if (tty) {
-          std::cerr << fmt::format(
-                           "\rcampaign: {}/{} units ({} already recorded), n = {}: best d {}, ETA "
-                           "{:.0f} s     ",
-                           p.done, p.total, p.skipped, p.n,
-                           best != best_d.end() ? fmt::format("{:.15Lg}", best->second)
-                                                : "none yet",
-                           eta)
-                    << std::flush;
-        } else {
-          // A log line per recorded unit: what a batch job (or the soak test) can check against
-          // the database after a kill.
-          std::cerr << fmt::format("campaign: recorded n = {} seed = {}: {}\n", p.n, p.seed,
-                                   p.d > 0 ? fmt::format("d = {:.15Lg}", p.d) : "not certified")
-                    << std::flush;
-        }
-      });
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a log
+  // every recorded unit is one line (what a batch job, or the soak test, checks after a kill).
+  const std::unique_ptr<jobs::Executor> executor = jobs::executor_for_launch(o.threads);
+  std::optional<report::ProgressLine> progress;
+  if (executor->rank() == 0) progress.emplace(std::cerr, job_line("campaign", 1, false));
+  const auto result = jobs::run_campaign(request, *executor, g.cancel,
+                                         progress ? progress->callback() : ProgressFn{});
+  if (progress) progress->finish();
   if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
-  if (tty) std::cerr << "\n";
   // The database's best of every n in the range, labelled like `db best`.
   const report::CampaignReport report{first, last,   o.runs,
-                                      o.db,  result, campaign::best_table(o.db, first, last)};
+                                      o.db,  result, jobs::best_table(o.db, first, last)};
   print_result(report, o.out);
   return result.cancelled ? 130 : 0;
 }
 
 int cmd_db_best(const DbOptions& o) {
-  const auto table = o.n ? campaign::best_table(o.db, o.n, o.n)
-                         : campaign::best_table(o.db, 0, std::numeric_limits<long long>::max());
+  const auto table = o.n ? jobs::best_table(o.db, o.n, o.n)
+                         : jobs::best_table(o.db, 0, std::numeric_limits<long long>::max());
   if (o.n && table.rows.empty())
     throw std::invalid_argument(fmt::format("no packings of n = {} in {}", o.n, o.db));
   print_result(table, o.out);
@@ -548,12 +435,12 @@ int cmd_db_best(const DbOptions& o) {
 int cmd_db_prune(const DbPruneOptions& o) {
   auto [first, last] = std::pair<long long, long long>{0, std::numeric_limits<long long>::max()};
   if (!o.n_range.empty()) std::tie(first, last) = parse_range(o.n_range, "--n");
-  print_result(campaign::prune_database(o.db, o.keep, first, last), o.out);
+  print_result(jobs::prune_database(o.db, o.keep, first, last), o.out);
   return 0;
 }
 
 int cmd_db_check(const DbCheckOptions& o) {
-  const campaign::DbCheck check = campaign::check_database(o.db);
+  const jobs::DbCheck check = jobs::check_database(o.db);
   if (check.stats.integrity != "ok")
     throw std::runtime_error("database " + o.db +
                              " fails the integrity check: " + check.stats.integrity);
@@ -610,7 +497,7 @@ int cmd_db_export(const DbExportOptions& o) {
     if (!format) format = named;
   }
   const PackingFormat& chosen = format ? *format : packing_formats().front();
-  const auto selected = campaign::select_packings(o.db, o.n, o.rank, o.all);
+  const auto selected = jobs::select_packings(o.db, o.n, o.rank, o.all);
   auto write_options = [&](const PackingRecord& r) {
     WriteOptions w;
     w.convention = convention;
@@ -645,13 +532,18 @@ int cmd_db_export(const DbExportOptions& o) {
   return 0;
 }
 
-int cmd_db_import(const DbImportOptions& o) {
-  campaign::ImportRequest request;
+int cmd_db_import(const GlobalOptions& g, const DbImportOptions& o) {
+  jobs::ImportRequest request;
   request.files = o.files;
+  request.threads = o.threads;
+  request.cancel = g.cancel;
   request.db = o.db;
   if (!o.convention.empty()) request.convention = convention_option(o.convention);
   request.tool_version = "tripack " TRIPACK_VERSION;
-  const auto result = campaign::import_packings(request);
+  report::ProgressLine progress(std::cerr, terminal_line("import", o.out, 2));
+  request.progress = progress.callback();
+  const auto result = jobs::import_packings(request);
+  progress.finish();
   for (const auto& x : result.packings)
     for (const auto& warning : x.warnings)
       std::cerr << "tripack: warning: " << x.file << ": " << warning << "\n";

@@ -6,12 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "core/progress.hpp"
 #include "report/render.hpp"
 
 namespace tripack::app {
 
 struct GlobalOptions {
   std::string catalogue;  // empty: Catalogue::default_path()
+  // Set by main() on Ctrl-C or SIGTERM (mpirun passes a Ctrl-C on to the ranks as SIGTERM): long
+  // jobs stop between items and report what finished. Null: nothing cancels (tests).
+  const CancelToken* cancel = nullptr;
 };
 
 // --json / --csv / --points: how the result is printed.
@@ -138,9 +142,10 @@ struct DbImportOptions {
   std::vector<std::string> files;
   std::string db = "tripack.db";
   std::string convention;  // empty: as each file declares (analyze's rule)
+  int threads = 2;         // files analysed at once
   OutputOptions out;
 };
-int cmd_db_import(const DbImportOptions& o);
+int cmd_db_import(const GlobalOptions& g, const DbImportOptions& o);
 struct DbPruneOptions {
   std::string db = "tripack.db";
   long long keep = 0;   // packings kept per n (required)

@@ -1,8 +1,12 @@
 // tripack: the command line. Parsing here, the work in app/commands.cpp.
 #include <CLI/CLI.hpp>
+#include <signal.h>
+
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <iostream>
+#include <thread>
 
 #include "app/commands.hpp"
 
@@ -196,7 +200,7 @@ struct DbCommandOptions {
   DbPruneOptions prune;
 };
 
-Action add_db(CLI::App& cli, DbCommandOptions& o) {
+Action add_db(CLI::App& cli, const GlobalOptions& g, DbCommandOptions& o) {
   auto* c = cli.add_subcommand("db", "Read, check, export and import a campaign database");
   c->require_subcommand(1);
   const char* db_help = "results database (default tripack.db)";
@@ -244,6 +248,8 @@ Action add_db(CLI::App& cli, DbCommandOptions& o) {
   imp->add_option("--db", o.imp.db, "results database, created if missing (default tripack.db)");
   imp->add_option("--convention", o.imp.convention,
                   std::string(conventions) + "; default: as the file declares, else unit-triangle");
+  imp->add_option("--threads", o.imp.threads, "files analysed at once (default 2)")
+      ->check(CLI::Range(1, 256));
   add_output_flags(imp, o.imp.out);
 
   auto* prune = c->add_subcommand(
@@ -262,7 +268,7 @@ Action add_db(CLI::App& cli, DbCommandOptions& o) {
     if (*best) return cmd_db_best(o.best);
     if (*check) return cmd_db_check(o.check);
     if (*exp) return cmd_db_export(o.exp);
-    if (*imp) return cmd_db_import(o.imp);
+    if (*imp) return cmd_db_import(g, o.imp);
     return -1;
   };
 }
@@ -279,6 +285,38 @@ int fail(const std::string& message, bool json, int code) {
   std::cerr << "tripack: error: " << message << "\n";
   if (json) tripack::report::render_error_json(std::cout, message);
   return code;
+}
+
+// The commands that stop cleanly between items when asked (the long jobs).
+bool observes_cancel(const CLI::App& cli) {
+  for (const auto* command : cli.get_subcommands()) {
+    const std::string name = command->get_name();
+    if (name == "db")
+      for (const auto* sub : command->get_subcommands()) return sub->get_name() == "import";
+    return name == "explore" || name == "atlas" || name == "campaign" || name == "billiards" ||
+           name == "compare";
+  }
+  return false;
+}
+
+// Ctrl-C and SIGTERM (mpirun passes a Ctrl-C on to the ranks as SIGTERM) are taken by a thread
+// of their own (sigwait), not a handler: the first sets the token, so the job starts nothing new
+// and reports what finished; the second ends the program at once. Blocked before any other
+// thread starts, so every thread inherits the mask and only this one receives them.
+void cancel_on_signals(tripack::CancelToken& cancel) {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  std::thread([signals, &cancel] {
+    for (;;) {
+      int received = 0;
+      if (sigwait(&signals, &received) != 0) continue;
+      if (cancel.cancel_again()) std::_Exit(130);
+      std::cerr << "\ntripack: stopping after the items under way (again to stop at once)\n";
+    }
+  }).detach();
 }
 
 }  // namespace
@@ -315,7 +353,7 @@ int main(int argc, char** argv) {
   const std::vector<Action> actions{
       add_campaign(cli, g, campaign),
       add_atlas(cli, g, atlas),
-      add_db(cli, db),
+      add_db(cli, g, db),
       add_build(cli, g, build),
       add_analyze(cli, analyze),
       add_check_formula(cli, g, check),
@@ -335,6 +373,11 @@ int main(int argc, char** argv) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
     return fail(e.what(), json, 2);
+  }
+  tripack::CancelToken cancel;  // outlives the signal thread: main never returns before exit
+  if (observes_cancel(cli)) {
+    cancel_on_signals(cancel);
+    g.cancel = &cancel;
   }
   try {
     for (const auto& action : actions)

@@ -88,12 +88,17 @@ long double smallest_gap(const Pattern& pat) {
 // where it is massively degenerate) changes nothing. Returns false, with `a` untouched, when the
 // start does not certify this way: the full pipeline then runs.
 // Reports a stage's start (or a step in it) when someone listens.
-void tell(const AnalysisProgressFn& progress, const std::string& stage, int step = 0,
+void tell(const ProgressFn& progress, const std::string& stage, int step = 0,
           long double d = 0) {
-  if (progress) progress({stage, step, d});
+  if (!progress) return;
+  Progress p;
+  p.stage = stage;
+  p.step = step;
+  p.d = d;
+  progress(p);
 }
 
-bool certified_start(const Packing& start, const AnalysisProgressFn& progress, Analysis& a) {
+bool certified_start(const Packing& start, const ProgressFn& progress, Analysis& a) {
   const auto t0 = Clock::now();
   Analysis f;
   f.pattern.packing = start;
@@ -172,7 +177,7 @@ bool certified_after_interior_relax(const Packing& start, const AnalysisOptions&
 // Bonds (the `loaded` contacts and those within 1e-6 d), rattlers centred, the LP-free
 // certificate, and the rigidity and stress LPs when it declines and `lps` allows them.
 void bonds_and_certificates(Analysis& a, const std::vector<Bond>& loaded, bool lps,
-                            const AnalysisProgressFn& progress) {
+                            const ProgressFn& progress) {
   Packing& pk = a.pattern.packing;
   tell(progress, "bonds + polish", 0, pk.d);
   a.identification = timed(a.times.bonds, [&] { return identify_bonds(pk, loaded); });

@@ -14,6 +14,7 @@
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
 #include "core/packing.hpp"
+#include "core/progress.hpp"
 #include "core/record.hpp"
 #include "polish/polish_mp.hpp"
 
@@ -27,15 +28,6 @@ struct StageTimes {
   }
 };
 
-// What a long analysis is doing, for a progress line (the pipeline prints nothing): a stage's
-// start (step 0) and, in relax, every step with the current d.
-struct AnalysisProgress {
-  std::string stage;
-  int step = 0;
-  long double d = 0;  // 0: not known at this point
-};
-using AnalysisProgressFn = std::function<void(const AnalysisProgress&)>;
-
 struct AnalysisOptions {
   int digits = 15;  // > kLongDoubleDigits: polish in MPFR to this many digits
   // From this many disks, a start that does not certify as it is is first moved by the
@@ -47,7 +39,9 @@ struct AnalysisOptions {
   // relax is not handed to the LPs (a billiards end state at n = 5000: the LP relax took over
   // N min); it is reported "not certified" with the LP-free certificate's reason.
   std::size_t lp_limit = 3000;
-  AnalysisProgressFn progress;
+  // A long analysis says what it is doing (the pipeline prints nothing): a stage's start and, in
+  // relax, every step (Progress::step) with the current d.
+  ProgressFn progress;
 };
 
 struct Analysis {
@@ -88,7 +82,7 @@ struct AnalyzeRequest {
   int digits = 15;
   std::optional<long long> expected_n;
   bool lp_any_size = false;  // lp_limit lifted
-  AnalysisProgressFn progress;
+  ProgressFn progress;
 };
 struct FileAnalysis {
   std::string file;

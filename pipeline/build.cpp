@@ -46,7 +46,10 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
   BuildResult b;
   b.digits = settings.digits;
   auto tell = [&](const char* stage) {
-    if (settings.progress) settings.progress({stage, 0, 0});
+    if (!settings.progress) return;
+    Progress p;
+    p.stage = stage;
+    settings.progress(p);
   };
   tell("construct");
   b.pattern = timed(b.times.construct, [&] { return build_pattern(catalogue, request); });

@@ -19,7 +19,7 @@ struct BuildSettings {
   int digits = 15;      // > kLongDoubleDigits: MPFR polish to this many digits
   bool polish = true;   // Newton on the builder's bond system
   bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
-  AnalysisProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
+  ProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
 };
 
 // Above this many disks certification is skipped (reported as skipped). With the fast certificate

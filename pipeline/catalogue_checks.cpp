@@ -108,4 +108,32 @@ CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
   return table;
 }
 
+std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n) {
+  std::vector<BuildRequest> members;
+  for (const auto& c : catalogue.classes()) {
+    std::optional<long long> first_n;  // n(k_min, p - 1)
+    for (long p = c.has_p ? c.p_min : 0;; ++p) {
+      bool any = false;
+      std::optional<long long> previous;
+      for (long k = c.k_min; !c.k_max || k <= c.k_max; ++k) {
+        const long long n = catalogue.n_of(c, k, p);
+        // n >= 1 growing with k and p ends both loops (else a malformed catalogue never would).
+        Catalogue::check_scan_step(c, 'k', k, previous, n);
+        if (c.has_p && k == c.k_min) {
+          Catalogue::check_scan_step(c, 'p', p, first_n, n);
+          first_n = n;
+        }
+        previous = n;
+        if (n > max_n) break;
+        any = true;
+        std::vector<std::string> variants = catalogue.variants_at(c, k);
+        if (variants.empty()) variants.push_back("");
+        for (const auto& v : variants) members.push_back({c.id, k, p, v});
+      }
+      if (!c.has_p || !any) break;
+    }
+  }
+  return members;
+}
+
 }  // namespace tripack::pipeline

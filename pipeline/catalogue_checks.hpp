@@ -68,4 +68,7 @@ struct CatalogueTable {
 CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
                                const std::function<void(const TableRow&)>& on_row = {});
 
+// Every (class, k, p, variant) of the catalogue with n <= max_n, in catalogue order.
+std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n);
+
 }  // namespace tripack::pipeline

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "campaign/atlas_files.hpp"
+#include "jobs/atlas_files.hpp"
 #include "core/io.hpp"
 #include "report/fields.hpp"
 #include "report/render.hpp"
@@ -23,7 +23,7 @@ json row_json(const PackingRecord& r) {
           {"label", r.label},
           {"d", r.d.str()},
           {"L", r.L.str()},
-          {"delta", campaign::atlas_delta(r)},
+          {"delta", jobs::atlas_delta(r)},
           {"bonds", r.pattern.bonds.size()},
           {"rattlers", r.pattern.rattlers.size()},
           {"rattler_indices", r.pattern.rattlers},
@@ -36,7 +36,7 @@ json row_json(const PackingRecord& r) {
 
 }  // namespace
 
-void render_text(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions&) {
+void render_text(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions&) {
   out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5}  {}\n", "n", "label", "d", "bonds", "ratt.",
                      "source");
   for (const auto& r : a.rows)
@@ -57,7 +57,7 @@ void render_text(std::ostream& out, const campaign::AtlasResult& a, const Render
       a.missing.size(), a.errors.size(), a.interrupted ? " (interrupted)" : "", a.seconds);
 }
 
-void render_json(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions&) {
+void render_json(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions&) {
   json rows = json::array(), builders = json::array();
   for (const auto& r : a.rows) rows.push_back(row_json(r));
   for (const auto& b : a.builders)
@@ -81,8 +81,8 @@ void render_json(std::ostream& out, const campaign::AtlasResult& a, const Render
   out << j.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
 }
 
-void render_csv(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions&) {
-  out << campaign::atlas_table(a);
+void render_csv(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions&) {
+  out << jobs::atlas_table(a);
 }
 
 }  // namespace tripack::report

@@ -5,15 +5,15 @@
 
 #include <iosfwd>
 
-#include "campaign/atlas.hpp"
+#include "jobs/atlas.hpp"
 
 namespace tripack::report {
 
 struct RenderOptions;  // report/render.hpp
 
 // `tripack atlas`: a line per n (its best row), the builders that fell short, the errors.
-void render_text(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions& o);
-void render_json(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions& o);
-void render_csv(std::ostream& out, const campaign::AtlasResult& a, const RenderOptions& o);
+void render_text(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions& o);
+void render_json(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions& o);
+void render_csv(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions& o);
 
 }  // namespace tripack::report

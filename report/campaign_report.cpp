@@ -89,7 +89,7 @@ json ranked_json(const PackingRecord& p, const RenderOptions& o) {
   return j;
 }
 
-json best_json(const campaign::BestTable& t, const RenderOptions& o) {
+json best_json(const jobs::BestTable& t, const RenderOptions& o) {
   json rows = json::array();
   for (const auto& r : t.rows) rows.push_back(ranked_json(r, o));
   return rows;
@@ -97,7 +97,7 @@ json best_json(const campaign::BestTable& t, const RenderOptions& o) {
 
 // One line per n: n, d with every stored digit, the label, the runs that ended in it, its first
 // seed ("-" for an import no run has found) and where it came from.
-void best_text(std::ostream& out, const campaign::BestTable& t) {
+void best_text(std::ostream& out, const jobs::BestTable& t) {
   out << fmt::format("{:>6}  {:<22} {:<8} {:>5} {:>10}  {}\n", "n", "d", "label", "runs",
                      "first seed", "source");
   for (const auto& p : t.rows)
@@ -105,7 +105,7 @@ void best_text(std::ostream& out, const campaign::BestTable& t) {
                        p.label, p.runs(), first_seed_text(p), source_text(p));
 }
 
-void best_csv(std::ostream& out, const campaign::BestTable& t) {
+void best_csv(std::ostream& out, const jobs::BestTable& t) {
   row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
             "origin", "source", "graph_hash"});
   for (const auto& p : t.rows)
@@ -151,21 +151,21 @@ void render_csv(std::ostream& out, const CampaignReport& r, const RenderOptions&
 
 // ----- tripack db best ------------------------------------------------------------------------
 
-void render_text(std::ostream& out, const campaign::BestTable& t, const RenderOptions&) {
+void render_text(std::ostream& out, const jobs::BestTable& t, const RenderOptions&) {
   best_text(out, t);
 }
 
-void render_json(std::ostream& out, const campaign::BestTable& t, const RenderOptions& o) {
+void render_json(std::ostream& out, const jobs::BestTable& t, const RenderOptions& o) {
   emit(out, {{"db", t.db}, {"best", best_json(t, o)}, {"seconds", t.seconds}});
 }
 
-void render_csv(std::ostream& out, const campaign::BestTable& t, const RenderOptions&) {
+void render_csv(std::ostream& out, const jobs::BestTable& t, const RenderOptions&) {
   best_csv(out, t);
 }
 
 // ----- tripack db check -----------------------------------------------------------------------
 
-void render_text(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+void render_text(std::ostream& out, const jobs::DbCheck& c, const RenderOptions&) {
   const auto& s = c.stats;
   out << (s.integrity == "ok" ? std::string("integrity ok") : "integrity FAILED: " + s.integrity)
       << "\n";
@@ -177,7 +177,7 @@ void render_text(std::ostream& out, const campaign::DbCheck& c, const RenderOpti
       c.duplicates(), s.duplicate_runs, s.duplicate_packings);
 }
 
-void render_json(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+void render_json(std::ostream& out, const jobs::DbCheck& c, const RenderOptions&) {
   const auto& s = c.stats;
   emit(out, {{"db", c.db},
              {"schema_version", c.schema_version},
@@ -192,7 +192,7 @@ void render_json(std::ostream& out, const campaign::DbCheck& c, const RenderOpti
              {"seconds", c.seconds}});
 }
 
-void render_csv(std::ostream& out, const campaign::DbCheck& c, const RenderOptions&) {
+void render_csv(std::ostream& out, const jobs::DbCheck& c, const RenderOptions&) {
   const auto& s = c.stats;
   row(out, {"db", "integrity", "runs", "n_values", "packings", "imported", "duplicates",
             "duplicate_runs", "duplicate_packings"});
@@ -203,7 +203,7 @@ void render_csv(std::ostream& out, const campaign::DbCheck& c, const RenderOptio
 
 // ----- tripack db import ----------------------------------------------------------------------
 
-void render_text(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+void render_text(std::ostream& out, const jobs::ImportResult& r, const RenderOptions&) {
   for (const auto& x : r.packings)
     out << fmt::format("{}: n = {}, d = {} ({} as read), {} bonds, {} rattlers, certified; {} {}\n",
                        x.file, x.n, x.d, x.d_file, x.bonds, x.rattlers.size(),
@@ -213,7 +213,7 @@ void render_text(std::ostream& out, const campaign::ImportResult& r, const Rende
                      r.seconds);
 }
 
-void render_json(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+void render_json(std::ostream& out, const jobs::ImportResult& r, const RenderOptions&) {
   json files = json::array();
   for (const auto& x : r.packings)
     files.push_back({{"file", x.file},
@@ -240,7 +240,7 @@ void render_json(std::ostream& out, const campaign::ImportResult& r, const Rende
              {"seconds", r.seconds}});
 }
 
-void render_csv(std::ostream& out, const campaign::ImportResult& r, const RenderOptions&) {
+void render_csv(std::ostream& out, const jobs::ImportResult& r, const RenderOptions&) {
   row(out, {"file", "n", "d", "d_file", "bonds", "rattlers", "stored", "label", "graph_hash"});
   for (const auto& x : r.packings)
     row(out, {x.file, integer(x.n), x.d, x.d_file, integer(x.bonds), integer(x.rattlers.size()),
@@ -249,7 +249,7 @@ void render_csv(std::ostream& out, const campaign::ImportResult& r, const Render
 
 // ----- tripack db prune -----------------------------------------------------------------------
 
-void render_text(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+void render_text(std::ostream& out, const jobs::PruneResult& r, const RenderOptions&) {
   out << fmt::format(
       "{}: kept {} packings (at most {} per n over {} values of n), removed {}; {:.1f} MB -> "
       "{:.1f} MB{}; {:.1f} s\n",
@@ -258,7 +258,7 @@ void render_text(std::ostream& out, const campaign::PruneResult& r, const Render
       r.not_compacted.empty() ? "" : " (not compacted: " + r.not_compacted + ")", r.seconds);
 }
 
-void render_json(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+void render_json(std::ostream& out, const jobs::PruneResult& r, const RenderOptions&) {
   emit(out, {{"db", r.db},
              {"keep", r.keep},
              {"n_values", r.n_values},
@@ -270,7 +270,7 @@ void render_json(std::ostream& out, const campaign::PruneResult& r, const Render
              {"seconds", r.seconds}});
 }
 
-void render_csv(std::ostream& out, const campaign::PruneResult& r, const RenderOptions&) {
+void render_csv(std::ostream& out, const jobs::PruneResult& r, const RenderOptions&) {
   row(out, {"db", "keep", "n_values", "kept", "removed", "bytes_before", "bytes_after"});
   row(out, {r.db, integer(r.keep), integer(r.n_values), integer(r.kept), integer(r.removed),
             integer(static_cast<long long>(r.bytes_before)),

@@ -12,6 +12,7 @@
 namespace tripack::report {
 
 using namespace pipeline;
+using namespace jobs;
 
 namespace {
 

@@ -19,6 +19,7 @@ namespace tripack::report {
 
 namespace fs = std::filesystem;
 using namespace pipeline;
+using namespace jobs;
 
 namespace {
 
@@ -127,7 +128,7 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result, const ExploreA
   }
   if (atlas)
     for (const auto& e : atlas->best) {
-      const double delta = std::stod(campaign::atlas_delta(e));
+      const double delta = std::stod(jobs::atlas_delta(e));
       points.push_back({e.n(), delta, "", false, false, true});
       // n in no class that the exploration did not search: its open square from the atlas.
       if (!in_class.count(e.n()) && !billiards_best.count(e.n()))
@@ -255,7 +256,7 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
         "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
         "<td>{5}</td><td style=\"text-align:left\">{6}</td><td><a href=\"atlas/{7}\">coordinates"
         "</a>{8}</td></tr>\n",
-        html_escape(e.label), e.n(), e.d.str(), campaign::atlas_delta(e).substr(0, 12), e.bonds(),
+        html_escape(e.label), e.n(), e.d.str(), jobs::atlas_delta(e).substr(0, 12), e.bonds(),
         e.rattlers(), html_escape(e.source_text()), html_escape(e.file),
         diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "");
   }

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "campaign/atlas_files.hpp"
-#include "pipeline/explore.hpp"
+#include "jobs/atlas_files.hpp"
+#include "jobs/explore.hpp"
 
 namespace tripack::report {
 
@@ -21,7 +21,7 @@ struct ExploreAtlas {
   std::filesystem::path csv;              // where atlas.csv was read
   std::vector<PackingRecord> rows;        // every row as read (no bonds: files keep none)
   std::vector<PackingRecord> best;        // the rank-1 rows, read back and analysed
-  std::vector<campaign::AtlasGap> gaps;   // atlas-gaps.csv beside it (empty if absent)
+  std::vector<jobs::AtlasGap> gaps;   // atlas-gaps.csv beside it (empty if absent)
 };
 
 struct ExploreReportOptions {
@@ -32,7 +32,7 @@ struct ExploreReportOptions {
 
 // Writes `dir` (created if needed). Throws a one-line error when the directory cannot be written
 // or gnuplot is missing (after the data files are written). `progress` gets a line per artifact.
-void write_explore_report(const pipeline::ExploreResult& result, const std::filesystem::path& dir,
+void write_explore_report(const jobs::ExploreResult& result, const std::filesystem::path& dir,
                           const ExploreReportOptions& options = {},
                           const std::function<void(const std::string&)>& progress = {});
 

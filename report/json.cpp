@@ -11,6 +11,7 @@ namespace tripack::report {
 
 using nlohmann::json;
 using namespace pipeline;
+using namespace jobs;
 
 namespace {
 
@@ -112,6 +113,7 @@ json billiards_json(const BilliardsSearchResult& r, const RenderOptions& o) {
   json j;
   j["n"] = r.scene.n;
   j["runs_asked"] = r.runs_asked;
+  j["runs_done"] = r.runs.size();  // fewer when interrupted
   j["effects"] = describe_effects(r.scene);
   j["seconds"] = r.seconds;
   j["runs"] = json::array();

@@ -13,10 +13,10 @@
 
 #include "constructors/catalogue.hpp"
 #include "pipeline/analyze.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
-#include "pipeline/compare.hpp"
+#include "jobs/compare.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
 
@@ -52,18 +52,18 @@ void render_text(std::ostream& out, const pipeline::FileAnalysis& a, const Rende
 void render_json(std::ostream& out, const pipeline::FileAnalysis& a, const RenderOptions& o);
 void render_csv(std::ostream& out, const pipeline::FileAnalysis& a, const RenderOptions& o);
 
-void render_text(std::ostream& out, const pipeline::BilliardsSearchResult& r,
+void render_text(std::ostream& out, const jobs::BilliardsSearchResult& r,
                  const RenderOptions& o);
-void render_json(std::ostream& out, const pipeline::BilliardsSearchResult& r,
+void render_json(std::ostream& out, const jobs::BilliardsSearchResult& r,
                  const RenderOptions& o);
-void render_csv(std::ostream& out, const pipeline::BilliardsSearchResult& r,
+void render_csv(std::ostream& out, const jobs::BilliardsSearchResult& r,
                 const RenderOptions& o);
 
-void render_text(std::ostream& out, const pipeline::ConstructedVsBilliards& c,
+void render_text(std::ostream& out, const jobs::ConstructedVsBilliards& c,
                  const RenderOptions& o);
-void render_json(std::ostream& out, const pipeline::ConstructedVsBilliards& c,
+void render_json(std::ostream& out, const jobs::ConstructedVsBilliards& c,
                  const RenderOptions& o);
-void render_csv(std::ostream& out, const pipeline::ConstructedVsBilliards& c,
+void render_csv(std::ostream& out, const jobs::ConstructedVsBilliards& c,
                 const RenderOptions& o);
 
 // The one dispatch point: a result in the chosen format.

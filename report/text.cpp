@@ -12,6 +12,7 @@
 namespace tripack::report {
 
 using namespace pipeline;
+using namespace jobs;
 
 namespace {
 
@@ -194,12 +195,17 @@ void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
                                        fmt::join(run.analysis->pattern.rattlers, " "))
                          : "");
   }
-  out << fmt::format("distinct packings ({} runs, {:.2f} s):\n", r.runs_asked, r.seconds);
+  const std::size_t ran = r.runs.size();
+  if (ran < static_cast<std::size_t>(r.runs_asked))
+    out << fmt::format("distinct packings ({} of {} runs: interrupted, {:.2f} s):\n", ran,
+                       r.runs_asked, r.seconds);
+  else
+    out << fmt::format("distinct packings ({} runs, {:.2f} s):\n", ran, r.seconds);
   for (const auto& x : r.packings)
     out << fmt::format(
         "  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} runs, first seed {})\n", x.label,
         x.d.str(15), x.bonds(), x.rattlers(), x.certified ? "certified" : "NOT certified", x.runs(),
-        r.runs_asked, x.first_seed());
+        ran, x.first_seed());
 }
 
 }  // namespace

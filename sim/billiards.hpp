@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/packing.hpp"
+#include "core/progress.hpp"
 #include "sim/scene.hpp"
 
 namespace tripack {
@@ -28,14 +29,6 @@ struct BilliardsEvent {
   int i = -1;
   int partner = -1;             // disk index, or -1 - side for a wall
   Vec2 position_i, velocity_i;  // disk i just after the collision (container units)
-};
-
-// A snapshot for progress displays.
-struct BilliardsProgress {
-  std::uint64_t events = 0, collisions = 0;
-  double seconds = 0;       // wall time so far
-  double diameter = 0;      // current disk diameter in the container
-  double relative_gap = 1;  // last estimate of 1 - diam / diam_jammed
 };
 
 struct BilliardsOptions {
@@ -49,7 +42,8 @@ struct BilliardsOptions {
   bool all_policies = false;
   // Called about every `progress_seconds` of wall time (checked every 4096 events, where the
   // wall-time stop rule is checked anyway); empty: never called.
-  std::function<void(const BilliardsProgress&)> progress;
+  // Stage "billiards": events, elapsed (wall seconds), d (of the current diameter), relative_gap.
+  ProgressFn progress;
   double progress_seconds = 0.5;
 };
 

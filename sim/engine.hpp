@@ -125,7 +125,13 @@ class Engine {
         }
         if (opt_.progress && elapsed >= next_progress) {
           next_progress = elapsed + opt_.progress_seconds;
-          opt_.progress({r.events, r.collisions, elapsed, diameter(now_), gap_});
+          Progress p;
+          p.stage = "billiards";
+          p.events = r.events;
+          p.elapsed = elapsed;
+          p.d = d_from_diameter(diameter(now_));
+          p.relative_gap = gap_;
+          opt_.progress(p);
         }
       }
       const bool requested = (false || ... || std::get<Effects>(fx_).sync_due());

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/accuracy.hpp"
+#include "jobs/accuracy.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 namespace {
 
 // d(22) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11) (docs/classes.md), 50 digits.
@@ -142,4 +142,4 @@ TEST(Accuracy, HardCasesAreStableReproduceThePaperAndKeepTheOrderOf33) {
 }
 
 }  // namespace
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

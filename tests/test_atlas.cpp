@@ -11,11 +11,12 @@
 #include <map>
 #include <string>
 
-#include "campaign/atlas.hpp"
-#include "campaign/atlas_files.hpp"
-#include "campaign/campaign.hpp"
+#include "pipeline/catalogue_checks.hpp"
+#include "jobs/atlas.hpp"
+#include "jobs/atlas_files.hpp"
+#include "jobs/campaign.hpp"
 #include "constructors/registry.hpp"
-#include "pipeline/explore.hpp"
+#include "jobs/explore.hpp"
 
 namespace tripack {
 namespace {
@@ -33,7 +34,7 @@ std::filesystem::path fresh_dir(const std::string& name) {
 TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
   const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
   const auto entries =
-      campaign::read_atlas(std::filesystem::path(TRIPACK_SOURCE_DIR) / "data" / "atlas.csv");
+      jobs::read_atlas(std::filesystem::path(TRIPACK_SOURCE_DIR) / "data" / "atlas.csv");
   std::map<long long, long double> best;
   for (const auto& e : entries)
     if (e.rank == 1) best[e.n()] = e.d.value();
@@ -54,21 +55,21 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
 // as its builders, polished to 30 digits; a packing both found is one row naming both sources.
 TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   const auto dir = fresh_dir("merge");
-  campaign::CampaignRequest request;
+  jobs::CampaignRequest request;
   request.n_first = 10;
   request.n_last = 13;
   request.runs = 6;
   request.threads = 2;
   request.db = (dir / "runs.db").string();
-  campaign::run_campaign(request, nullptr, {});
+  jobs::run_campaign(request, jobs::ThreadExecutor(request.threads), nullptr, {});
   const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
-  campaign::AtlasSettings settings;
+  jobs::AtlasSettings settings;
   settings.n_first = 9;  // n = 9 has no run: its builder (Delta(4)-1) alone
   settings.n_last = 13;
   settings.ranked_first = 12;
   settings.ranked_last = 12;
   settings.ranked_count = 3;
-  const auto atlas = campaign::build_atlas(catalogue, request.db, settings, nullptr, {});
+  const auto atlas = jobs::build_atlas(catalogue, request.db, settings, nullptr, {});
   EXPECT_TRUE(atlas.errors.empty());
   EXPECT_TRUE(atlas.missing.empty());
   std::map<long long, int> rows_of_n;
@@ -96,8 +97,8 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
       << t12a.source_text();
   EXPECT_NE(t12a.source_text().find("billiards seed"), std::string::npos) << t12a.source_text();
   // Written and read back: the same rows; every file named exists.
-  campaign::write_atlas(atlas, dir / "data");
-  const auto entries = campaign::read_atlas(dir / "data" / "atlas.csv");
+  jobs::write_atlas(atlas, dir / "data");
+  const auto entries = jobs::read_atlas(dir / "data" / "atlas.csv");
   ASSERT_EQ(entries.size(), atlas.rows.size());
   for (std::size_t i = 0; i < entries.size(); ++i) {
     EXPECT_EQ(entries[i].label, atlas.rows[i].label);
@@ -110,7 +111,7 @@ TEST(Atlas, AMalformedTableIsOneLineNamingTheFile) {
   const auto dir = fresh_dir("bad");
   std::ofstream(dir / "atlas.csv") << "n,d\n2,1\n";
   try {
-    campaign::read_atlas(dir / "atlas.csv");
+    jobs::read_atlas(dir / "atlas.csv");
     FAIL() << "no error";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("atlas.csv:1: not a tripack atlas table"),

@@ -2,18 +2,17 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
 
-#include "campaign/campaign.hpp"
-#include "campaign/stored.hpp"
-#include "campaign/work_unit.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/campaign.hpp"
+#include "jobs/stored.hpp"
+#include "jobs/work_unit.hpp"
+#include "jobs/billiards_search.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 namespace {
 
 std::string fresh_db(const std::string& name) {
@@ -32,7 +31,7 @@ TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
   request.runs = 4;
   request.threads = 2;
   request.db = fresh_db("agree.db");
-  const CampaignResult first = run_campaign(request, nullptr, {});
+  const CampaignResult first = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   EXPECT_EQ(first.units, 16);
   EXPECT_EQ(first.skipped, 0);
   EXPECT_EQ(first.recorded, 16);
@@ -40,17 +39,17 @@ TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
   ASSERT_EQ(first.best.size(), 4u);
   // The same seeds through `tripack billiards`' search: the same best d for every n.
   for (const auto& best : first.best) {
-    pipeline::BilliardsSearch search;
+    jobs::BilliardsSearch search;
     search.scene = default_scene(static_cast<int>(best.n));
     search.runs = 4;
     search.seed = 1;
-    const auto found = pipeline::search_billiards(search);
+    const auto found = jobs::search_billiards(search);
     ASSERT_FALSE(found.packings.empty());
     EXPECT_LT(std::fabs(std::stold(best.d) / found.packings.front().pattern.packing.d - 1), 1e-12L)
         << "n = " << best.n;
   }
   // Rerun: nothing to do, nothing counted twice.
-  const CampaignResult again = run_campaign(request, nullptr, {});
+  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   EXPECT_EQ(again.skipped, 16);
   EXPECT_EQ(again.recorded, 0);
   EXPECT_EQ(store::ResultsDb::open(request.db).run_count(), 16);
@@ -62,13 +61,14 @@ TEST(Campaign, AnInterruptedCampaignResumesWithoutRepeats) {
   request.n_last = 9;
   request.runs = 5;
   request.db = fresh_db("resume.db");
-  std::atomic<bool> cancel{false};
-  const CampaignResult part = run_campaign(request, &cancel, [&](const CampaignProgress& p) {
-    if (p.done == 3) cancel = true;  // as Ctrl-C would, after the third unit
-  });
+  CancelToken cancel;
+  const CampaignResult part =
+      run_campaign(request, ThreadExecutor(request.threads), &cancel, [&](const Progress& p) {
+        if (p.done == 3) cancel.cancel();  // as Ctrl-C would, after the third unit
+      });
   EXPECT_TRUE(part.cancelled);
   EXPECT_EQ(part.recorded, 3);
-  const CampaignResult rest = run_campaign(request, nullptr, {});
+  const CampaignResult rest = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   EXPECT_EQ(rest.skipped, 3);
   EXPECT_EQ(rest.recorded, 7);
   const auto db = store::ResultsDb::open(request.db);
@@ -127,7 +127,7 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
   request.n_first = 0;
   request.n_last = 1;
   request.db = fresh_db("never.db");
-  EXPECT_THROW(run_campaign(request, nullptr, {}), std::invalid_argument);
+  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), nullptr, {}), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(request.db));  // checked before the database is made
 }
 
@@ -140,7 +140,7 @@ TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   request.runs = 12;
   request.threads = 2;
   request.db = fresh_db("prune.db");
-  run_campaign(request, nullptr, {});
+  run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   std::map<long long, std::vector<PackingRecord>> before;
   std::map<long long, std::vector<long long>> before_ids;
   {
@@ -168,11 +168,11 @@ TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   }
   EXPECT_EQ(pruned.removed, removed);
   EXPECT_EQ(db.statistics().integrity, "ok");
-  const CampaignResult again = run_campaign(request, nullptr, {});
+  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   EXPECT_EQ(again.skipped, 48);
   EXPECT_EQ(again.recorded, 0);
   EXPECT_THROW(prune_database(request.db, 0, 2, 100), std::invalid_argument);
 }
 
 }  // namespace
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -2,7 +2,6 @@
 // every written packing file re-analysed passes the certificate its row claims.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,7 +12,8 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
-#include "pipeline/explore.hpp"
+#include "jobs/explore.hpp"
+#include "pipeline/catalogue_checks.hpp"
 #include "report/explore_report.hpp"
 
 namespace tripack {
@@ -27,9 +27,9 @@ const Catalogue& catalogue() {
 }
 
 // A small exploration (seconds): class members up to 60, billiards up to n = 12.
-const pipeline::ExploreResult& small_exploration() {
-  static const pipeline::ExploreResult result = [] {
-    pipeline::ExploreSettings s;
+const jobs::ExploreResult& small_exploration() {
+  static const jobs::ExploreResult result = [] {
+    jobs::ExploreSettings s;
     s.max_n = 60;
     s.billiards_max_n = 12;
     s.class_billiards_max_n = 16;
@@ -37,8 +37,8 @@ const pipeline::ExploreResult& small_exploration() {
     s.large_terms.clear();
     s.runs = 6;
     s.accuracy = false;  // tests/test_accuracy.cpp covers it
-    std::atomic<bool> cancel{false};
-    return pipeline::explore(catalogue(), s, cancel);
+    const CancelToken cancel;
+    return jobs::explore(catalogue(), s, cancel);
   }();
   return result;
 }
@@ -131,21 +131,21 @@ TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
 }
 
 TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
-  pipeline::ExploreSettings s;
+  jobs::ExploreSettings s;
   s.max_n = 30;
   s.stress_set.clear();
   s.large_terms.clear();
   s.accuracy = false;
-  std::atomic<bool> cancel{false};
-  int calls = 0;
-  const auto result =
-      pipeline::explore(catalogue(), s, cancel, [&](const pipeline::ExploreProgress&) {
-        if (++calls == 5) cancel = true;  // as Ctrl-C would, during the build stage
-      });
+  s.threads = 1;  // one item at a time: none is under way when the token is set
+  CancelToken cancel;
+  int finished = 0;
+  const auto result = jobs::explore(catalogue(), s, cancel, [&](const Progress& p) {
+    if (p.item_finished && ++finished == 5) cancel.cancel();  // as Ctrl-C would, during the builds
+  });
   EXPECT_TRUE(result.interrupted);
   EXPECT_TRUE(result.stages_done.empty());
-  // The fifth item had started when the flag was set (the flag is read between items): it
-  // finishes, nothing after it starts.
+  // The token is read between items: the fifth build had finished when it was set, and nothing
+  // after it starts.
   EXPECT_EQ(result.packings.size(), 5u);
 }
 

@@ -16,16 +16,16 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "campaign/campaign.hpp"
-#include "campaign/import.hpp"
-#include "campaign/stored.hpp"
+#include "jobs/campaign.hpp"
+#include "jobs/import.hpp"
+#include "jobs/stored.hpp"
 #include "constructors/catalogue.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/build.hpp"
 #include "report/packing_file.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 namespace {
 
 namespace fs = std::filesystem;
@@ -96,7 +96,7 @@ std::string campaign_db(const std::string& name) {
   request.runs = 4;
   request.threads = 2;
   request.db = fresh_db(name);
-  run_campaign(request, nullptr, {});
+  run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   return request.db;
 }
 
@@ -357,4 +357,4 @@ TEST(Import, ExportSelectsByRankAndRefusesWhatIsNotThere) {
 }
 
 }  // namespace
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

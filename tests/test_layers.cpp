@@ -1,7 +1,8 @@
 // The layers' arrows (docs/architecture.md): core <- polish <- {constructors, analysis}; core <- sim; those <-
-// pipeline <- store <- campaign <- report <- app (a campaign records its units in the store; the
-// report renders the campaign's and the database commands' results). Every #include "dir/..." of
-// a source file must name its own layer or one below it; tests/ and bench/ may include anything.
+// pipeline <- store <- jobs <- report <- app (the long jobs run the pipeline's stages on the job
+// runner and record in the store; the report renders the jobs' and the database commands'
+// results). Every #include "dir/..." of a source file must name its own layer or one below it;
+// tests/ and bench/ may include anything.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -28,7 +29,7 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
     a["sim"] = {"core", "sim"};
     a["pipeline"] = {"core", "polish", "constructors", "analysis", "sim", "pipeline"};
     // A chain from here: each layer may include itself and everything below it.
-    const char* chain[] = {"pipeline", "store", "campaign", "report", "app"};
+    const char* chain[] = {"pipeline", "store", "jobs", "report", "app"};
     for (std::size_t i = 1; i < std::size(chain); ++i) {
       a[chain[i]] = a[chain[i - 1]];
       a[chain[i]].insert(chain[i]);
@@ -66,7 +67,8 @@ TEST(Layers, EveryIncludePointsDown) {
   for (const auto& v : violations) ADD_FAILURE() << v;
   // The check saw the tree: each layer directory exists.
   for (const char* layer :
-       {"core", "polish", "constructors", "analysis", "sim", "pipeline", "report", "app"})
+       {"core", "polish", "constructors", "analysis", "sim", "pipeline", "store", "jobs", "report",
+        "app"})
     EXPECT_TRUE(fs::is_directory(fs::path(TRIPACK_SOURCE_DIR) / layer)) << layer;
 }
 
@@ -79,18 +81,18 @@ TEST(Layers, APlantedUpwardIncludeIsCaught) {
   std::ofstream(root / "report" / "ok.cpp")
       << "#include \"pipeline/build.hpp\"\n#include <cmath>\n";
   std::ofstream(root / "app" / "ok.cpp") << "#include \"report/render.hpp\"\n";
-  // report may render the campaign's results; the campaign must not reach up to report.
-  for (const char* dir : {"campaign", "store"}) fs::create_directories(root / dir);
-  std::ofstream(root / "report" / "ok2.cpp") << "#include \"campaign/stored.hpp\"\n";
-  std::ofstream(root / "campaign" / "bad.cpp") << "#include \"report/render.hpp\"\n";
-  std::ofstream(root / "store" / "bad.cpp") << "#include \"campaign/campaign.hpp\"\n";
+  // report may render the jobs' results; the jobs must not reach up to report, nor the store to jobs.
+  for (const char* dir : {"jobs", "store"}) fs::create_directories(root / dir);
+  std::ofstream(root / "report" / "ok2.cpp") << "#include \"jobs/stored.hpp\"\n";
+  std::ofstream(root / "jobs" / "bad.cpp") << "#include \"report/render.hpp\"\n";
+  std::ofstream(root / "store" / "bad.cpp") << "#include \"jobs/campaign.hpp\"\n";
   const auto violations = layer_violations(root);
   fs::remove_all(root);
   ASSERT_EQ(violations.size(), 4u);
-  EXPECT_EQ(violations[0], "campaign/bad.cpp:1 includes report/");
-  EXPECT_EQ(violations[1], "core/bad.hpp:1 includes analysis/");
+  EXPECT_EQ(violations[0], "core/bad.hpp:1 includes analysis/");
+  EXPECT_EQ(violations[1], "jobs/bad.cpp:1 includes report/");
   EXPECT_EQ(violations[2], "sim/bad.cpp:1 includes constructors/");
-  EXPECT_EQ(violations[3], "store/bad.cpp:1 includes campaign/");
+  EXPECT_EQ(violations[3], "store/bad.cpp:1 includes jobs/");
 }
 
 }  // namespace

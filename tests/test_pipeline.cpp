@@ -16,7 +16,7 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "sim/billiards.hpp"
 
@@ -177,8 +177,8 @@ TEST(Pipeline, ProgressReportsEveryStageInOrder) {
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 6, 0, ""});
   AnalysisOptions options;
   options.interior_from = 0;
-  std::vector<AnalysisProgress> events;
-  options.progress = [&](const AnalysisProgress& p) { events.push_back(p); };
+  std::vector<Progress> events;
+  options.progress = [&](const Progress& p) { events.push_back(p); };
   const Analysis a = analyze_packing(perturbed(built.packing, 1e-5L, 7), options);
   ASSERT_TRUE(a.relax.interior);
   std::vector<std::string> stages;
@@ -437,12 +437,12 @@ TEST(Labels, SharedDGetsBondCountsAndSharedBondsGetSuffixes) {
 TEST(BilliardsSearch, RankingDoesNotDependOnThreads) {
   // Run r uses seed + r whatever thread runs it, and ties are broken by bonds then seed: one and
   // two threads give the same labels, d and counts (n = 22: t22a d = 0.179396908611866, GL1995).
-  BilliardsSearch search;
+  jobs::BilliardsSearch search;
   search.scene = default_scene(22);
   search.runs = 12;
-  const auto one = search_billiards(search);
+  const auto one = jobs::search_billiards(search);
   search.threads = 2;
-  const auto two = search_billiards(search);
+  const auto two = jobs::search_billiards(search);
   ASSERT_EQ(one.packings.size(), two.packings.size());
   for (std::size_t i = 0; i < one.packings.size(); ++i) {
     EXPECT_EQ(one.packings[i].label, two.packings[i].label);

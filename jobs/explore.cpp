@@ -1,17 +1,20 @@
-#include "pipeline/explore.hpp"
+#include "jobs/explore.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <set>
 
 #include "core/conventions.hpp"
 #include "core/timing.hpp"
+#include "jobs/runner.hpp"
+#include "pipeline/catalogue_checks.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 namespace {
 
@@ -51,7 +54,7 @@ struct Plan {
 
 Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   Plan plan;
-  plan.builds = class_members_up_to(catalogue, s.max_n);
+  plan.builds = pipeline::class_members_up_to(catalogue, s.max_n);
   std::set<long long> search_n;
   for (long long n = 2; n <= std::min(s.billiards_max_n, s.max_n); ++n) search_n.insert(n);
   for (const auto& b : plan.builds) {
@@ -77,7 +80,7 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   return plan;
 }
 
-PackingRecord packing_of_build(const BuildResult& b, double seconds) {
+PackingRecord packing_of_build(const pipeline::BuildResult& b, double seconds) {
   PackingRecord row = b.record;
   row.label = member_tag(row.pattern.provenance);
   row.rank = 0;
@@ -124,7 +127,7 @@ void compare_with_builders(ExploreResult& result, long long n, const BilliardsSe
   const Comparison c = compare_packings(b.pattern, x.pattern);
   ExploreComparison row;
   row.n = n;
-  row.builder = member_name(b.pattern.provenance);
+  row.builder = pipeline::member_name(b.pattern.provenance);
   row.billiards_label = x.label;
   row.d_builder = b.pattern.packing.d;
   row.d_billiards = x.pattern.packing.d;
@@ -161,7 +164,7 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
     g.L_n = 1 / r.pattern.packing.d;
     g.L_next = 1 / next->second->pattern.packing.d;
     g.next_source = next->second->from_builder()
-                        ? "builder: " + member_name(next->second->pattern.provenance)
+                        ? "builder: " + pipeline::member_name(next->second->pattern.provenance)
                         : "billiards: " + next->second->label;
     g.claim_tight = catalogue.find(r.pattern.provenance.class_id).claim_tight;
     gaps.push_back(g);
@@ -174,13 +177,13 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
 PackingRecord build_row(const Catalogue& catalogue, const BuildRequest& request) {
   const auto start = Clock::now();
   try {
-    return packing_of_build(build_and_certify(catalogue, request, BuildSettings{}),
+    return packing_of_build(pipeline::build_and_certify(catalogue, request, pipeline::BuildSettings{}),
                             seconds_since(start));
   } catch (const std::exception& certify_error) {
-    BuildSettings polish_only;
+    pipeline::BuildSettings polish_only;
     polish_only.certify = false;
     PackingRecord row =
-        packing_of_build(build_and_certify(catalogue, request, polish_only), seconds_since(start));
+        packing_of_build(pipeline::build_and_certify(catalogue, request, polish_only), seconds_since(start));
     row.verdict = std::string("not certified: ") + certify_error.what();
     return row;
   }
@@ -188,66 +191,65 @@ PackingRecord build_row(const Catalogue& catalogue, const BuildRequest& request)
 
 }  // namespace
 
-std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n) {
-  std::vector<BuildRequest> members;
-  for (const auto& c : catalogue.classes()) {
-    std::optional<long long> first_n;  // n(k_min, p - 1)
-    for (long p = c.has_p ? c.p_min : 0;; ++p) {
-      bool any = false;
-      std::optional<long long> previous;
-      for (long k = c.k_min; !c.k_max || k <= c.k_max; ++k) {
-        const long long n = catalogue.n_of(c, k, p);
-        // n >= 1 growing with k and p ends both loops (else a malformed catalogue never would).
-        Catalogue::check_scan_step(c, 'k', k, previous, n);
-        if (c.has_p && k == c.k_min) {
-          Catalogue::check_scan_step(c, 'p', p, first_n, n);
-          first_n = n;
-        }
-        previous = n;
-        if (n > max_n) break;
-        any = true;
-        std::vector<std::string> variants = catalogue.variants_at(c, k);
-        if (variants.empty()) variants.push_back("");
-        for (const auto& v : variants) members.push_back({c.id, k, p, v});
-      }
-      if (!c.has_p || !any) break;
-    }
-  }
-  return members;
-}
-
 double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettings& settings) {
   return plan_for(catalogue, settings).cost;
 }
 
 ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
-                      const std::atomic<bool>& cancel,
-                      const std::function<void(const ExploreProgress&)>& progress) {
+                      const CancelToken& cancel, const ProgressFn& progress) {
   const auto start = Clock::now();
   ExploreResult result;
   result.settings = settings;
   const Plan plan = plan_for(catalogue, settings);
-  double done = 0;
-  auto report = [&](const std::string& stage, const std::string& item) {
-    if (progress)
-      progress({stage, item, plan.cost > 0 ? std::min(1.0, done / plan.cost) : 1.0,
-                seconds_since(start)});
+  double done = 0;  // estimated seconds of the items finished
+  std::mutex report_lock;
+  auto report = [&](const std::string& stage, const std::string& item, double cost_done = 0) {
+    std::lock_guard<std::mutex> lock(report_lock);
+    done += cost_done;
+    if (!progress) return;
+    Progress p;
+    p.stage = stage;
+    p.item = item;
+    p.fraction = plan.cost > 0 ? std::min(1.0, done / plan.cost) : 1.0;
+    p.elapsed = seconds_since(start);
+    p.item_finished = cost_done > 0;
+    progress(p);
   };
-  for (const auto& request : plan.builds) {
-    if (cancel) break;
-    const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
-    const std::string name = member_name({request.class_id, request.k, request.p, request.variant});
-    report("build", fmt::format("{} (n = {})", name, n));
+
+  // Builds on the runner's threads, in catalogue order in the result.
+  std::vector<std::optional<PackingRecord>> built(plan.builds.size());
+  std::vector<std::string> build_errors(plan.builds.size());
+  JobItems builds;
+  builds.count = plan.builds.size();
+  builds.run = [&](std::size_t i) {
+    const BuildRequest& request = plan.builds[i];
+    const std::string name =
+        pipeline::member_name({request.class_id, request.k, request.p, request.variant});
     try {
-      result.packings.push_back(build_row(catalogue, request));
+      built[i] = build_row(catalogue, request);
     } catch (const std::exception& e) {
-      result.errors.push_back(fmt::format("build {}: {}", name, e.what()));
+      build_errors[i] = fmt::format("build {}: {}", name, e.what());
     }
-    done += build_cost(n);
+    return std::string();
+  };
+  builds.finished = [&](std::size_t i, const std::string&) {
+    const BuildRequest& request = plan.builds[i];
+    const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
+    report("build",
+           fmt::format("{} (n = {})",
+                       pipeline::member_name({request.class_id, request.k, request.p, request.variant}), n),
+           build_cost(n));
+  };
+  ThreadExecutor(settings.threads).run_items(builds, &cancel);
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    if (built[i]) result.packings.push_back(std::move(*built[i]));
+    if (!build_errors[i].empty()) result.errors.push_back(build_errors[i]);
   }
-  if (!cancel) result.stages_done.push_back("build");
+  if (!cancel.cancelled()) result.stages_done.push_back("build");
+
+  // Searches one n at a time, each on the runner's threads.
   for (long long n : plan.searches) {
-    if (cancel) break;
+    if (cancel.cancelled()) break;
     const bool large = n > settings.billiards_max_n && n > settings.class_billiards_max_n;
     BilliardsSearch search;
     search.scene = default_scene(static_cast<int>(n));
@@ -255,6 +257,8 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     search.seed = settings.seed;
     search.threads = settings.threads;
     search.cancel = &cancel;
+    const double cost = search_cost(n, search.runs, settings.threads,
+                                    search.scene.growth ? search.scene.growth->rate : 0.01);
     report("billiards", fmt::format("n = {}, {} runs", n, search.runs));
     const auto t0 = Clock::now();
     try {
@@ -266,22 +270,20 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     } catch (const std::exception& e) {
       result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
     }
-    done += search_cost(n, search.runs, settings.threads,
-                        search.scene.growth ? search.scene.growth->rate : 0.01);
+    report("billiards", fmt::format("n = {}, {} runs", n, search.runs), cost);
   }
-  if (!cancel) result.stages_done.push_back("billiards");
-  if (settings.accuracy && !cancel) {
-    report("accuracy", "digits against time, hard cases");
+  if (!cancel.cancelled()) result.stages_done.push_back("billiards");
+  if (settings.accuracy && !cancel.cancelled()) {
     try {
       AccuracySettings accuracy;
       accuracy.seed = settings.seed;
-      result.accuracy = measure_accuracy(
-          catalogue, accuracy, [&](const std::string& stage) { report("accuracy", stage); });
-      result.stages_done.push_back("accuracy");
+      result.accuracy = measure_accuracy(catalogue, accuracy, &cancel, [&](const Progress& p) {
+        report("accuracy", p.item, p.item_finished ? kAccuracyCost / std::max(1LL, p.total) : 0);
+      });
+      if (!result.accuracy->interrupted) result.stages_done.push_back("accuracy");
     } catch (const std::exception& e) {
       result.errors.push_back(std::string("accuracy: ") + e.what());
     }
-    done += kAccuracyCost;
   }
   std::stable_sort(result.packings.begin(), result.packings.end(),
                    [](const PackingRecord& a, const PackingRecord& b) {
@@ -295,10 +297,10 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   for (auto& r : result.packings)
     r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n()] * (1 - 1e-12L);
   result.class_gaps = class_gaps_of(catalogue, result.packings);
-  result.interrupted = cancel;
+  result.interrupted = cancel.cancelled();
   result.seconds = seconds_since(start);
   report("done", "");
   return result;
 }
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

@@ -1,4 +1,4 @@
-#include "campaign/atlas_files.hpp"
+#include "jobs/atlas_files.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "core/io.hpp"
 #include "pipeline/analyze.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
 
@@ -246,4 +246,4 @@ std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long lon
   return rows;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

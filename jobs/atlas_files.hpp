@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "campaign/atlas.hpp"
+#include "jobs/atlas.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 // Writes DIR/atlas.csv and DIR/atlas/*.txt (files of rows no longer in the atlas are removed, so
 // the directory is exactly the table), and DIR/atlas-gaps.csv (class, p, k, n, n_label,
@@ -35,4 +35,4 @@ std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv);
 // certificate from the file alone), with the table's label, rank, d and L. Same errors.
 std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long long max_rank);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -5,15 +5,14 @@
 #pragma once
 
 #include <array>
-#include <atomic>
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "constructors/catalogue.hpp"
+#include "core/progress.hpp"
 #include "core/record.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 struct AtlasSettings {
   long long n_first = 2, n_last = 200;  // every n of this range, or:
@@ -57,12 +56,6 @@ struct AtlasGap {
   std::string claim_tight;           // the paper's conjecture (classes.yaml claim.tight)
 };
 
-struct AtlasProgress {
-  long long n = 0;
-  long long done = 0, total = 0;  // values of n
-  double elapsed = 0;
-};
-
 struct AtlasResult {
   AtlasSettings settings;
   std::string db;
@@ -77,9 +70,10 @@ struct AtlasResult {
 
 // Reads the database (read-only), builds every catalogue member of each n, certifies and polishes
 // every candidate, ranks and labels them like `tripack billiards`. Throws store::StoreError for
-// the database. Stops between values of n when `cancel` is set (interrupted in the result).
+// the database. The values of n are the job runner's items (stage "atlas", one report per n);
+// stops between them when `cancel` is set (interrupted in the result).
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
-                        const AtlasSettings& settings, const std::atomic<bool>* cancel,
-                        const std::function<void(const AtlasProgress&)>& progress);
+                        const AtlasSettings& settings, const CancelToken* cancel,
+                        const ProgressFn& progress);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

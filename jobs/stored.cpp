@@ -1,4 +1,4 @@
-#include "campaign/stored.hpp"
+#include "jobs/stored.hpp"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
 
@@ -128,4 +128,4 @@ PruneResult prune_database(const std::string& path, long long keep, long long n_
   return result;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

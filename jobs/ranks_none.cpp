@@ -1,11 +1,11 @@
-// Built without MPI: a campaign runs on threads only; a launch by mpirun is refused (each rank
+// Built without MPI: jobs run on threads only; a launch by mpirun is refused (each rank
 // would otherwise run the whole campaign on the same database).
 #include <stdexcept>
 
-#include "campaign/ranks.hpp"
-#include "campaign/ranks_env.hpp"
+#include "jobs/ranks.hpp"
+#include "jobs/ranks_env.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 struct RankLink::State {};
 
@@ -31,10 +31,10 @@ int RankLink::size() const {
 std::optional<RankLink::Report> RankLink::poll_report() {
   return std::nullopt;
 }
-void RankLink::send_unit(int, const WorkUnit&) {}
+void RankLink::send_item(int, std::size_t) {}
 void RankLink::send_stop(int) {}
-std::optional<WorkUnit> RankLink::report_and_wait(const std::string&) {
+std::optional<std::size_t> RankLink::report_and_wait(const std::string&) {
   return std::nullopt;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

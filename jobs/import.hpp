@@ -2,8 +2,9 @@
 // `tripack analyze` reads it (core/io + core/points: every layout, the three conventions), checked
 // for overlapping disks, analysed by the same pipeline (pipeline::analyze_packing: relax, bonds,
 // rattlers, rigidity, stress) and, when certified, stored with its contact-graph hash, bonds,
-// rattlers, origin "import", source = the file's name and no seed. All files are analysed before
-// anything is written, then stored in one transaction: a refused file stores none of them.
+// rattlers, origin "import", source = the file's name and no seed. All files are analysed (on the
+// job runner's threads) before anything is written, then stored in one transaction: a refused
+// file stores none of them.
 #pragma once
 
 #include <optional>
@@ -12,8 +13,9 @@
 #include <vector>
 
 #include "core/conventions.hpp"
+#include "core/progress.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 // A file refused: one line naming it and why.
 struct ImportError : std::runtime_error {
@@ -32,6 +34,9 @@ struct ImportRequest {
   std::string db;                        // created if missing
   std::optional<Convention> convention;  // none: as each file declares (analyze's rule)
   std::string tool_version;
+  int threads = 1;                      // files analysed at once (the job runner's threads)
+  const CancelToken* cancel = nullptr;  // stops before the store: nothing is stored
+  ProgressFn progress;                  // stage "import": one report per analysed file
 };
 
 struct ImportedPacking {
@@ -67,4 +72,4 @@ struct ImportResult {
 // (another schema version, not a database, locked). In every case nothing is stored.
 ImportResult import_packings(const ImportRequest& request);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -1,20 +1,19 @@
-// The campaign's MPI messages (OpenMPI): a worker sends tag kReport (its last run, encoded, empty
-// at first); rank 0 answers tag kUnit (n, seed) or tag kStop. Rank 0 polls with MPI_Iprobe and
+// The runner's MPI messages (OpenMPI): a worker sends tag kReport (its last item's result, empty
+// at first); rank 0 answers tag kItem (the item's index) or tag kStop. Rank 0 polls with MPI_Iprobe and
 // sleeps between polls, so waiting for workers costs no core while its own threads compute.
 #include <mpi.h>
 
-#include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
-#include "campaign/ranks.hpp"
-#include "campaign/ranks_env.hpp"
+#include "jobs/ranks.hpp"
+#include "jobs/ranks_env.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
-constexpr int kReport = 1, kUnit = 2, kStop = 3;
+constexpr int kReport = 1, kItem = 2, kStop = 3;
 }  // namespace
 
 struct RankLink::State {
@@ -60,28 +59,28 @@ std::optional<RankLink::Report> RankLink::poll_report() {
   MPI_Get_count(&status, MPI_CHAR, &length);
   Report report;
   report.from = status.MPI_SOURCE;
-  report.run.resize(static_cast<std::size_t>(length));
-  MPI_Recv(report.run.data(), length, MPI_CHAR, status.MPI_SOURCE, kReport, MPI_COMM_WORLD,
+  report.result.resize(static_cast<std::size_t>(length));
+  MPI_Recv(report.result.data(), length, MPI_CHAR, status.MPI_SOURCE, kReport, MPI_COMM_WORLD,
            MPI_STATUS_IGNORE);
   return report;
 }
 
-void RankLink::send_unit(int to, const WorkUnit& unit) {
-  const std::array<std::int64_t, 2> message{unit.n, static_cast<std::int64_t>(unit.seed)};
-  MPI_Send(message.data(), 2, MPI_INT64_T, to, kUnit, MPI_COMM_WORLD);
+void RankLink::send_item(int to, std::size_t index) {
+  const auto message = static_cast<std::int64_t>(index);
+  MPI_Send(&message, 1, MPI_INT64_T, to, kItem, MPI_COMM_WORLD);
 }
 
 void RankLink::send_stop(int to) {
   MPI_Send(nullptr, 0, MPI_INT64_T, to, kStop, MPI_COMM_WORLD);
 }
 
-std::optional<WorkUnit> RankLink::report_and_wait(const std::string& run) {
-  MPI_Send(run.data(), static_cast<int>(run.size()), MPI_CHAR, 0, kReport, MPI_COMM_WORLD);
-  std::array<std::int64_t, 2> message{};
+std::optional<std::size_t> RankLink::report_and_wait(const std::string& result) {
+  MPI_Send(result.data(), static_cast<int>(result.size()), MPI_CHAR, 0, kReport, MPI_COMM_WORLD);
+  std::int64_t message = 0;
   MPI_Status status;
-  MPI_Recv(message.data(), 2, MPI_INT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
+  MPI_Recv(&message, 1, MPI_INT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
   if (status.MPI_TAG == kStop) return std::nullopt;
-  return WorkUnit{message[0], static_cast<std::uint64_t>(message[1])};
+  return static_cast<std::size_t>(message);
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

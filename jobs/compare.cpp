@@ -1,20 +1,20 @@
-#include "pipeline/compare.hpp"
+#include "jobs/compare.hpp"
 
 #include "core/timing.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search, const BuildSettings& settings) {
+                                           BilliardsSearch search, const pipeline::BuildSettings& settings) {
   const auto start = Clock::now();
   ConstructedVsBilliards result;
   result.n = n;
-  if (!catalogue.classify(n).empty()) result.constructed = build_best_for_n(catalogue, n, settings);
+  if (!catalogue.classify(n).empty()) result.constructed = pipeline::build_best_for_n(catalogue, n, settings);
   if (search.scene.n == 0) search.scene = default_scene(static_cast<int>(n));
   prepare_scene(catalogue, search.scene, n);
   result.billiards = search_billiards(search);
   if (result.both()) {
-    const BuildResult& best = result.constructed->best;
+    const pipeline::BuildResult& best = result.constructed->best;
     const Pattern& built = best.analysis ? best.analysis->pattern : best.pattern;
     const Pattern& found = result.billiards.packings.front().pattern;
     result.comparison = compare_packings(built, found);
@@ -24,4 +24,4 @@ ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long
   return result;
 }
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

@@ -1,20 +1,20 @@
-// Campaigns (docs/campaigns.md, issue 11): billiards runs over many n as work units (n, seed), run on
-// threads or, when the program was started by mpirun, on MPI ranks (campaign/ranks.hpp), each
+// Campaigns (docs/campaigns.md): billiards runs over many n as work units (n, seed), run by the job
+// runner on threads or, when the program was started by mpirun, on MPI ranks (jobs/ranks.hpp), each
 // finished unit recorded in the results database at once (store/), so rerunning the same request
 // skips every unit already recorded and an interrupted campaign loses at most the units under way.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/progress.hpp"
+#include "jobs/runner.hpp"
 #include "sim/scene.hpp"
 #include "store/results_db.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 struct CampaignRequest {
   long long n_first = 0, n_last = 0;  // every n in [n_first, n_last] with n >= 2
@@ -24,15 +24,6 @@ struct CampaignRequest {
   std::string db;   // the results database file
   std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
   std::string tool_version;
-};
-
-struct CampaignProgress {
-  long long done = 0, total = 0;  // units finished in this call, units it has to do
-  long long skipped = 0;          // already in the database
-  long long n = 0;                // the unit just finished
-  std::uint64_t seed = 0;
-  long double d = 0;  // its certified d (0 when not certified)
-  double elapsed = 0;
 };
 
 struct CampaignResult {
@@ -48,12 +39,14 @@ struct CampaignResult {
   int rank = 0;   // this process's rank: only rank 0's result has counts and the best packings
 };
 
-// Throws std::invalid_argument for a range without n >= 2, runs < 1, threads < 1 (< 0 under
-// mpirun), a scene with initial points; store::StoreError for the database (before any run
-// starts, or after the units under way when a write fails: what was recorded stays); under
-// mpirun, std::runtime_error when built without MPI. Rank 0 is the only process that opens the
-// database.
-CampaignResult run_campaign(const CampaignRequest& request, const std::atomic<bool>* cancel,
-                            const std::function<void(const CampaignProgress&)>& progress);
+// Runs the units the database does not hold yet on `executor` (executor_for_launch: threads, or
+// MPI ranks under mpirun). Progress: stage "campaign", one report per recorded unit (item
+// "recorded n = N seed = S: d = ..."). Throws std::invalid_argument for a range without n >= 2,
+// runs < 1, threads < 1 (< 0 under mpirun), a scene with initial points; store::StoreError for the
+// database (before any run starts, or after the units under way when a write fails: what was
+// recorded stays). Rank 0 is the only process that opens the database; the other ranks' result is
+// empty.
+CampaignResult run_campaign(const CampaignRequest& request, const Executor& executor,
+                            const CancelToken* cancel, const ProgressFn& progress);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

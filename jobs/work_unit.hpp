@@ -8,7 +8,7 @@
 
 #include "store/results_db.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 struct WorkUnit {
   long long n = 0;
@@ -19,4 +19,4 @@ std::string encode_run(const store::RunRecord& run);
 // Throws std::runtime_error for a text that encode_run did not write.
 store::RunRecord decode_run(const std::string& text);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -1,9 +1,8 @@
-// Many billiards runs of one scene in parallel threads, each end state relaxed, polished and
-// certified, then the distinct packings ranked by d and labelled like the paper (t22a, t22b, ...).
+// Many billiards runs of one scene on the job runner's threads, each end state relaxed, polished
+// and certified, then the distinct packings ranked by d and labelled like the paper (t22a, t22b, ...).
 // Returns results; progress goes to a callback.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -11,20 +10,13 @@
 #include <vector>
 
 #include "constructors/catalogue.hpp"
+#include "core/progress.hpp"
 #include "core/record.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
 
-namespace tripack::pipeline {
-
-struct SearchProgress {
-  int runs_done = 0, runs = 0;
-  int run = -1;                           // the run this snapshot is from
-  std::optional<BilliardsProgress> live;  // a running run's state
-  std::optional<long double> finished_d;  // a run just finished with this billiards d
-  double events_per_second = 0;
-};
+namespace tripack::jobs {
 
 struct BilliardsSearch {
   Scene scene;  // validated, points filled (see prepare_scene)
@@ -32,15 +24,17 @@ struct BilliardsSearch {
   std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
   int threads = 1;
   bool certify = true;  // relax, bonds, rigidity, stress of every end state
-  std::function<void(const SearchProgress&)> progress;  // from any worker thread, serialised
+  // Stage "billiards": a live snapshot of a run under way (item "run R") about every 0.5 s, and
+  // one report per finished run (d: its billiards d). Called one at a time.
+  ProgressFn progress;
   // When set, no new run starts (runs under way finish); the result holds the runs done.
-  const std::atomic<bool>* cancel = nullptr;
+  const CancelToken* cancel = nullptr;
 };
 
 struct RunOutcome {
   std::uint64_t seed = 0;
   BilliardsResult sim;
-  std::optional<Analysis> analysis;
+  std::optional<pipeline::Analysis> analysis;
   std::string error;  // the run failed with this message (the others go on)
   std::string label;  // of its distinct packing; "-" when not certified usable
   bool ran = false;   // false: cancelled before it started
@@ -62,4 +56,4 @@ void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_
 
 BilliardsSearchResult search_billiards(const BilliardsSearch& search);
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

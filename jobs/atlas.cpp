@@ -1,4 +1,4 @@
-#include "campaign/atlas.hpp"
+#include "jobs/atlas.hpp"
 
 #include <fmt/format.h>
 
@@ -6,25 +6,24 @@
 #include <chrono>
 #include <limits>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <set>
-#include <thread>
 #include <tuple>
 
 #include "analysis/compare.hpp"
-#include "campaign/stored.hpp"
+#include "jobs/stored.hpp"
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
-#include "pipeline/explore.hpp"
+#include "pipeline/catalogue_checks.hpp"
+#include "jobs/runner.hpp"
 #include "polish/polish_mp.hpp"
 #include "store/results_db.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
 
@@ -158,8 +157,8 @@ std::vector<AtlasGap> gaps_of(const Catalogue& catalogue, const std::vector<Pack
 std::string atlas_delta(const PackingRecord& row) { return oler_delta_from_L(row.L.str(), row.n()); }
 
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
-                        const AtlasSettings& settings, const std::atomic<bool>* cancel,
-                        const std::function<void(const AtlasProgress&)>& progress) {
+                        const AtlasSettings& settings, const CancelToken* cancel,
+                        const ProgressFn& progress) {
   const auto start = Clock::now();
   AtlasResult result;
   result.settings = settings;
@@ -198,31 +197,26 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
     if (n >= first) members[n].push_back(m);
   }
 
+  // Values of n on the runner's threads, largest first (the slowest start early), results by n.
   std::map<long long, CandidatesOfN> outcomes;
-  std::mutex lock;
-  std::size_t next = 0;
-  long long done = 0;
-  auto worker = [&] {
-    for (;;) {
-      long long n = 0;
-      {
-        std::lock_guard<std::mutex> guard(lock);
-        if (next >= pending.size() || (cancel && *cancel)) return;
-        n = pending[next++];
-      }
-      CandidatesOfN outcome = candidates_of(catalogue, n, stored[n], members[n], settings.digits);
-      std::lock_guard<std::mutex> guard(lock);
-      outcomes[n] = std::move(outcome);
-      ++done;
-      if (progress)
-        progress({n, done, static_cast<long long>(pending.size()), seconds_since(start)});
-    }
+  std::vector<CandidatesOfN> found(pending.size());
+  ProgressCounter counter("atlas", static_cast<long long>(pending.size()));
+  JobItems items;
+  items.count = pending.size();
+  items.run = [&](std::size_t i) {
+    const long long n = pending[i];
+    const auto m = members.find(n);  // (no operator[]: the map is shared by the threads)
+    found[i] = candidates_of(catalogue, n, stored.at(n),
+                             m == members.end() ? std::vector<BuildRequest>{} : m->second,
+                             settings.digits);
+    return std::string();
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::max(1, settings.threads); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  result.interrupted = static_cast<std::size_t>(done) < pending.size();
+  items.finished = [&](std::size_t i, const std::string&) {
+    outcomes[pending[i]] = std::move(found[i]);
+    const Progress p = counter.finished(fmt::format("n = {}", pending[i]));
+    if (progress) progress(p);
+  };
+  result.interrupted = ThreadExecutor(settings.threads).run_items(items, cancel).cancelled;
 
   for (auto& [n, outcome] : outcomes) {
     result.errors.insert(result.errors.end(), outcome.errors.begin(), outcome.errors.end());
@@ -241,4 +235,4 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
   return result;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -1,11 +1,11 @@
-#include "campaign/work_unit.hpp"
+#include "jobs/work_unit.hpp"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "core/io.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
 
@@ -74,4 +74,4 @@ store::RunRecord decode_run(const std::string& text) {
   }
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -10,8 +10,9 @@
 #include <vector>
 
 #include "constructors/catalogue.hpp"
+#include "core/progress.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 struct AccuracyRow {
   long long n = 0;
@@ -37,6 +38,7 @@ struct HardCase {
 struct AccuracyStudy {
   std::vector<AccuracyRow> rows;
   std::vector<HardCase> hard_cases;
+  bool interrupted = false;  // cancelled before every item ran
   double seconds = 0;
 };
 
@@ -50,12 +52,15 @@ struct AccuracySettings {
   std::string hard_case_dir;
 };
 
+// The rows and hard cases one item at a time on the job runner (stage "accuracy"); stops between
+// items when cancelled (interrupted in the result).
 AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySettings& settings,
-                               const std::function<void(const std::string& stage)>& progress = {});
+                               const CancelToken* cancel = nullptr,
+                               const ProgressFn& progress = {});
 
 // Correct significant digits of `value` against `reference`, -log10(|value - reference| /
 // |reference|), both positive decimal strings in fixed notation, computed from their digits (a
 // subtraction in double would stop at ~16); `cap` when they agree to every digit, and at most cap.
 double correct_digits(const std::string& value, const std::string& reference, double cap);
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

@@ -6,14 +6,14 @@
 #include <optional>
 
 #include "analysis/compare.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 struct ConstructedVsBilliards {
   long long n = 0;
-  std::optional<BestBuild> constructed;  // none: no class of the catalogue contains n
+  std::optional<pipeline::BestBuild> constructed;  // none: no class of the catalogue contains n
   BilliardsSearchResult billiards;
   // Against the best (first-ranked) billiards packing, when both exist:
   std::optional<Comparison> comparison;
@@ -24,6 +24,6 @@ struct ConstructedVsBilliards {
 
 // `search.scene` may be left empty: the default scene for n is used then.
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search, const BuildSettings& settings);
+                                           BilliardsSearch search, const pipeline::BuildSettings& settings);
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

@@ -12,7 +12,7 @@
 #include "core/record.hpp"
 #include "store/results_db.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 // Every stored packing of n as a record (store::record_of), ranked and labelled by
 // core/ranking.hpp like every other list of packings (imports without a seed after the runs'
@@ -65,4 +65,4 @@ struct PruneResult {
 PruneResult prune_database(const std::string& path, long long keep, long long n_first,
                            long long n_last);
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -1,21 +1,19 @@
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "analysis/compare.hpp"
 #include "core/ranking.hpp"
 #include "constructors/registry.hpp"
 #include "core/timing.hpp"
+#include "jobs/runner.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_n) {
   if (scene.pattern) {
@@ -39,52 +37,41 @@ void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_
 
 namespace {
 
-// Every run, in parallel; run r uses seed + r.
+// Every run on the runner's threads; run r uses seed + r.
 std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
   std::vector<RunOutcome> runs(static_cast<std::size_t>(search.runs));
-  std::atomic<int> next{0}, done{0};
-  std::mutex report;
-  auto notify = [&](SearchProgress p) {
-    if (!search.progress) return;
-    std::lock_guard<std::mutex> lock(report);
-    p.runs_done = done.load();
-    p.runs = search.runs;
-    search.progress(p);
-  };
-  auto worker = [&] {
-    for (int r; (r = next.fetch_add(1)) < search.runs;) {
-      if (search.cancel && *search.cancel) break;
-      RunOutcome& run = runs[static_cast<std::size_t>(r)];
-      run.seed = search.seed + static_cast<std::uint64_t>(r);
-      run.ran = true;
-      std::mt19937_64 rng(run.seed);
-      BilliardsOptions options;
-      if (search.progress)
-        options.progress = [&, r](const BilliardsProgress& live) {
-          SearchProgress p;
-          p.run = r;
-          p.live = live;
-          notify(p);
-        };
-      try {
-        run.sim = run_billiards(search.scene, rng, options);
-        if (search.scene.n >= 2 && search.certify)
-          run.analysis = analyze_packing(run.sim.packing, {});
-      } catch (const std::exception& e) {
-        run.error = e.what();
-      }
-      ++done;
-      SearchProgress p;
-      p.run = r;
-      p.finished_d = run.sim.packing.d;
-      p.events_per_second = run.sim.seconds > 0 ? run.sim.events / run.sim.seconds : 0.0;
-      notify(p);
+  const ProgressFn progress = serialised(search.progress);
+  ProgressCounter counter("billiards", search.runs);
+  JobItems items;
+  items.count = runs.size();
+  items.run = [&](std::size_t r) {
+    RunOutcome& run = runs[r];
+    run.seed = search.seed + r;
+    run.ran = true;
+    std::mt19937_64 rng(run.seed);
+    BilliardsOptions options;
+    if (progress)
+      options.progress = [&, r](const Progress& live) {
+        Progress p = live;
+        p.item = fmt::format("run {}", r);
+        p.done = counter.done();
+        p.total = search.runs;
+        progress(p);
+      };
+    try {
+      run.sim = run_billiards(search.scene, rng, options);
+      if (search.scene.n >= 2 && search.certify)
+        run.analysis = pipeline::analyze_packing(run.sim.packing, {});
+    } catch (const std::exception& e) {
+      run.error = e.what();
     }
+    return std::string();
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::max(1, search.threads); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  items.finished = [&](std::size_t r, const std::string&) {
+    Progress p = counter.finished(fmt::format("run {}", r), runs[r].sim.packing.d);
+    if (progress) progress(p);
+  };
+  ThreadExecutor(search.threads).run_items(items, search.cancel);
   return runs;
 }
 
@@ -97,7 +84,7 @@ std::vector<PackingRecord> distinct_of(std::vector<RunOutcome>& runs, long long 
   for (std::size_t r = 0; r < runs.size(); ++r)
     if (runs[r].analysis && runs[r].analysis->identification.polish.converged) {
       usable.push_back(r);
-      PackingRecord record = record_of(*runs[r].analysis);
+      PackingRecord record = pipeline::record_of(*runs[r].analysis);
       record.sources.push_back({PackingSource::Kind::Billiards, "", runs[r].seed, 1});
       found.push_back(std::move(record));
     }
@@ -126,4 +113,4 @@ BilliardsSearchResult search_billiards(const BilliardsSearch& search) {
   return result;
 }
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

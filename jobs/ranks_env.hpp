@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 inline int ranks_from_environment() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
@@ -19,4 +19,4 @@ inline int ranks_from_environment() {
   return 1;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

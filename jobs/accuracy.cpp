@@ -1,4 +1,4 @@
-#include "pipeline/accuracy.hpp"
+#include "jobs/accuracy.hpp"
 
 #include <fmt/format.h>
 
@@ -17,14 +17,15 @@
 #include "core/neighbours.hpp"
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "core/timing.hpp"
+#include "jobs/runner.hpp"
 #include "polish/polish_mp.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 namespace {
 
@@ -134,9 +135,9 @@ struct Landmark {
 
 std::optional<Landmark> catalogue_best(const Catalogue& catalogue, long long n) {
   if (catalogue.classify(n).empty()) return std::nullopt;
-  BuildSettings settings;
+  pipeline::BuildSettings settings;
   settings.certify = false;
-  BestBuild best = build_best_for_n(catalogue, n, settings);
+  pipeline::BestBuild best = pipeline::build_best_for_n(catalogue, n, settings);
   Landmark mark{std::move(best.best.pattern), ""};
   const ClassInfo& cls = catalogue.find(mark.pattern.provenance.class_id);
   const Provenance& member = mark.pattern.provenance;
@@ -145,7 +146,7 @@ std::optional<Landmark> catalogue_best(const Catalogue& catalogue, long long n) 
         (ref.variant.empty() || ref.variant == member.variant))
       mark.label = ref.label;
   if (mark.label.empty())
-    mark.label = fmt::format("{} (catalogue)", member_name(mark.pattern.provenance));
+    mark.label = fmt::format("{} (catalogue)", pipeline::member_name(mark.pattern.provenance));
   return mark;
 }
 
@@ -248,7 +249,7 @@ Packing perturbed(const Packing& start, long double amplitude, std::mt19937_64& 
 }
 
 struct Stability {
-  Analysis base;
+  pipeline::Analysis base;
   int copies = 0;
   bool same = true;          // every copy: same bonds, rattlers and verdict, d within tolerance
   long double d_spread = 0;  // largest |d_copy / d_base - 1|
@@ -262,11 +263,11 @@ constexpr long double kSameDTolerance = 1e-15L;
 
 Stability check_stability(const Packing& start, int copies, std::uint64_t seed) {
   Stability s;
-  s.base = analyze_packing(start, {});
+  s.base = pipeline::analyze_packing(start, {});
   s.copies = copies;
   for (int c = 0; c < copies; ++c) {
     std::mt19937_64 rng(seed + static_cast<std::uint64_t>(c));
-    const Analysis a = analyze_packing(perturbed(start, kPerturbation, rng), {});
+    const pipeline::Analysis a = pipeline::analyze_packing(perturbed(start, kPerturbation, rng), {});
     const long double spread = std::fabs(a.pattern.packing.d / s.base.pattern.packing.d - 1);
     s.d_spread = std::max(s.d_spread, spread);
     std::string why;
@@ -288,7 +289,7 @@ Stability check_stability(const Packing& start, int copies, std::uint64_t seed) 
   return s;
 }
 
-std::string verdict_word(const Analysis& a) {
+std::string verdict_word(const pipeline::Analysis& a) {
   if (a.certified()) return "certified";
   return a.stress.exists && a.rigidity.rigid ? "not certified strict" : "not certified";
 }
@@ -306,7 +307,7 @@ std::string stability_evidence(const Stability& s) {
 }
 
 // The smallest non-bond gap not involving a rattler (a near contact), in units of d.
-std::optional<Gap> nearest_contact(const Analysis& a) {
+std::optional<Gap> nearest_contact(const pipeline::Analysis& a) {
   for (const auto& g : a.gaps)
     if (!g.rattler) return g;
   return std::nullopt;
@@ -355,7 +356,7 @@ Lock tightest_lock(const Pattern& p) {
 }
 
 // The rattlers' gaps to their cages (rattlers centred), smallest first, in d.
-std::vector<Gap> cage_gaps(const Analysis& a) {
+std::vector<Gap> cage_gaps(const pipeline::Analysis& a) {
   std::vector<Gap> gaps;
   for (const auto& g : a.gaps)
     if (g.rattler) gaps.push_back(g);
@@ -380,7 +381,7 @@ HardCase from_stability(std::string name, std::string what, const Stability& s,
 
 // t34a: the near contacts take three values (paper: 5 pairs at 0.021359, 2 walls at 0.024750,
 // 2 pairs at 0.042561); groups the non-rattler gaps below 0.05 d that agree to 1e-6.
-std::string gap_groups(const Analysis& a) {
+std::string gap_groups(const pipeline::Analysis& a) {
   std::vector<std::pair<long double, int>> groups;
   for (const auto& g : a.gaps) {
     if (g.rattler || g.gap > 0.05L) continue;
@@ -510,7 +511,7 @@ HardCase large_n_case(const Catalogue& catalogue) {
     spread = std::max(spread, s.d_spread);
     const std::size_t rattlers = s.base.pattern.rattlers.size();
     members += fmt::format("{}{} {}: {} bonds, {} rattler{}{}, {}{}", members.empty() ? "" : "; ",
-                           n, member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
+                           n, pipeline::member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
                            rattlers, rattlers == 1 ? "" : "s", as_built ? "" : " (NOT as built)",
                            verdict_word(s.base), s.same ? "" : " (" + s.difference + ")");
   }
@@ -550,28 +551,30 @@ HardCase corner_case(const Catalogue& catalogue) {
       fmt::format("{} disks with two wall bonds", std::count(walls.begin(), walls.end(), 2)));
 }
 
-std::vector<HardCase> measure_hard_cases(const Catalogue& catalogue,
-                                         const AccuracySettings& settings,
-                                         const std::function<void(const std::string&)>& progress) {
+// The hard cases by name, each measured when called; a case whose analysis throws is reported
+// as not stable, with the error as its evidence.
+std::vector<std::pair<std::string, std::function<HardCase()>>> hard_case_measures(
+    const Catalogue& catalogue, const AccuracySettings& settings,
+    const std::function<void(const std::string&)>& progress) {
   const std::string dir = hard_case_dir(settings);
-  std::vector<HardCase> cases;
-  // A case whose analysis throws is reported as not stable, with the error as its evidence.
+  std::vector<std::pair<std::string, std::function<HardCase()>>> cases;
   auto add = [&](const std::string& name, const std::function<HardCase()>& measure) {
-    if (progress) progress("hard cases: " + name);
-    try {
-      cases.push_back(measure());
-    } catch (const std::exception& e) {
-      cases.push_back({name, "-", false, std::string("error: ") + e.what()});
-    }
+    cases.emplace_back(name, [name, measure]() -> HardCase {
+      try {
+        return measure();
+      } catch (const std::exception& e) {
+        return {name, "-", false, std::string("error: ") + e.what()};
+      }
+    });
   };
-  add("t33c tight cage", [&] { return tight_cage_case(dir); });
-  add("t18a near contact", [&] { return near_contact_case(dir, "t18a", "0.0048728"); });
-  add("t33a near contact", [&] { return near_contact_case(dir, "t33a", "0.0017032"); });
-  add("t34a many near-equal gaps", [&] { return near_equal_gaps_case(dir); });
-  add("large n 254-260", [&] { return large_n_case(catalogue); });
-  add("class 6 near-degenerate", [&] { return near_degenerate_case(catalogue); });
-  add("corner disks (t22a)", [&] { return corner_case(catalogue); });
-  add("t33 close pair (78 vs 74 bonds)", [&] { return close_pair_case(dir, progress); });
+  add("t33c tight cage", [dir] { return tight_cage_case(dir); });
+  add("t18a near contact", [dir] { return near_contact_case(dir, "t18a", "0.0048728"); });
+  add("t33a near contact", [dir] { return near_contact_case(dir, "t33a", "0.0017032"); });
+  add("t34a many near-equal gaps", [dir] { return near_equal_gaps_case(dir); });
+  add("large n 254-260", [&catalogue] { return large_n_case(catalogue); });
+  add("class 6 near-degenerate", [&catalogue] { return near_degenerate_case(catalogue); });
+  add("corner disks (t22a)", [&catalogue] { return corner_case(catalogue); });
+  add("t33 close pair (78 vs 74 bonds)", [dir, progress] { return close_pair_case(dir, progress); });
   return cases;
 }
 
@@ -603,16 +606,40 @@ double correct_digits(const std::string& value, const std::string& reference, do
 }
 
 AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySettings& settings,
-                               const std::function<void(const std::string& stage)>& progress) {
+                               const CancelToken* cancel, const ProgressFn& progress) {
   const auto start = Clock::now();
-  AccuracyStudy study;
-  for (long long n : settings.n) {
+  for (long long n : settings.n)
     if (n < 2) throw std::invalid_argument("measure_accuracy: n must be at least 2");
-    measure_n(n, catalogue, settings, progress, study.rows);
-  }
-  if (settings.hard_cases) study.hard_cases = measure_hard_cases(catalogue, settings, progress);
+  AccuracyStudy study;
+  // One item per n, then per hard case, on one thread: the study measures time, so its items
+  // must not compete for the cores.
+  std::vector<std::pair<std::string, std::function<void()>>> tasks;
+  std::optional<ProgressCounter> counter;  // once the items are counted
+  auto say = [&](const std::string& what) {
+    if (progress && counter) progress(counter->snapshot(what));
+  };
+  for (long long n : settings.n)
+    tasks.emplace_back(fmt::format("n = {}", n),
+                       [&, n] { measure_n(n, catalogue, settings, say, study.rows); });
+  if (settings.hard_cases)
+    for (auto& [name, measure] : hard_case_measures(catalogue, settings, say))
+      tasks.emplace_back("hard cases: " + name,
+                         [&, measure] { study.hard_cases.push_back(measure()); });
+  counter.emplace("accuracy", static_cast<long long>(tasks.size()));
+  JobItems items;
+  items.count = tasks.size();
+  items.run = [&](std::size_t i) {
+    say(tasks[i].first);
+    tasks[i].second();
+    return std::string();
+  };
+  items.finished = [&](std::size_t i, const std::string&) {
+    const Progress p = counter->finished(tasks[i].first);
+    if (progress) progress(p);
+  };
+  study.interrupted = ThreadExecutor(1).run_items(items, cancel).cancelled;
   study.seconds = seconds_since(start);
   return study;
 }
 
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

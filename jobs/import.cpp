@@ -1,4 +1,4 @@
-#include "campaign/import.hpp"
+#include "jobs/import.hpp"
 
 #include "core/timing.hpp"
 
@@ -8,13 +8,14 @@
 #include <filesystem>
 
 #include "analysis/compare.hpp"
-#include "campaign/stored.hpp"
+#include "jobs/stored.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/analyze.hpp"
+#include "jobs/runner.hpp"
 #include "store/results_db.hpp"
 
-namespace tripack::campaign {
+namespace tripack::jobs {
 
 namespace {
 
@@ -79,9 +80,22 @@ ImportResult import_packings(const ImportRequest& request) {
     std::error_code ec;
     if (std::filesystem::exists(request.db, ec)) store::ResultsDb::open(request.db);
   }
+  // The files on the runner's threads; the first refusal stops the job (rethrown here).
   std::vector<store::StoredPacking> stored(request.files.size());
-  for (std::size_t i = 0; i < request.files.size(); ++i)
-    result.packings.push_back(analyse_file(request, request.files[i], stored[i]));
+  result.packings.resize(request.files.size());
+  ProgressCounter counter("import", static_cast<long long>(request.files.size()));
+  JobItems items;
+  items.count = request.files.size();
+  items.run = [&](std::size_t i) {
+    result.packings[i] = analyse_file(request, request.files[i], stored[i]);
+    return std::string();
+  };
+  items.finished = [&](std::size_t i, const std::string&) {
+    const Progress p = counter.finished(request.files[i]);
+    if (request.progress) request.progress(p);
+  };
+  if (ThreadExecutor(request.threads).run_items(items, request.cancel).cancelled)
+    throw ImportError("interrupted: nothing was stored");
   store::ResultsDb db = store::ResultsDb::open(request.db);
   const std::vector<store::AddOutcome> outcomes = db.add_packings(stored);
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
@@ -98,4 +112,4 @@ ImportResult import_packings(const ImportRequest& request) {
   return result;
 }
 
-}  // namespace tripack::campaign
+}  // namespace tripack::jobs

@@ -1,22 +1,22 @@
 // The explorer (`tripack explore`, issue 9): every class member up to max_n built and certified,
 // billiards searches for small n, class members and the matrix stress set, the two compared, and
 // the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
-// report directory. Stops between items when `cancel` is set and says so in the result.
+// report directory. Every stage runs on the job runner (jobs/runner.hpp) and stops between items
+// when `cancel` is set; the result says so.
 #pragma once
 
-#include <atomic>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "pipeline/accuracy.hpp"
-#include "pipeline/billiards_search.hpp"
+#include "jobs/accuracy.hpp"
+#include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
-#include "pipeline/compare.hpp"
+#include "jobs/compare.hpp"
+#include "core/progress.hpp"
 #include "core/record.hpp"
 
-namespace tripack::pipeline {
+namespace tripack::jobs {
 
 struct ExploreSettings {
   long long max_n = 300;                 // class members built and certified up to this n
@@ -53,13 +53,6 @@ struct ClassGap {
   std::string claim_tight;          // the paper's conjecture from classes.yaml
 };
 
-struct ExploreProgress {
-  std::string stage;    // "build", "billiards", ...
-  std::string item;     // what is being done now
-  double fraction = 0;  // of the whole exploration's estimated cost, 0..1
-  double elapsed = 0;   // seconds
-};
-
 struct ExploreResult {
   ExploreSettings settings;
   // One record per row of packings.csv: by n, builder rows first (label: the billiards label of
@@ -79,11 +72,9 @@ struct ExploreResult {
 // docs/performance.md), to warn before a run far beyond the 5-minute budget.
 double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettings& settings);
 
+// Progress: stage "build", "billiards", "accuracy" or "done", the item in words, and the fraction
+// of the whole exploration's estimated cost (Progress::fraction).
 ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
-                      const std::atomic<bool>& cancel,
-                      const std::function<void(const ExploreProgress&)>& progress = {});
+                      const CancelToken& cancel, const ProgressFn& progress = {});
 
-// Every (class, k, p, variant) of the catalogue with n <= max_n, in catalogue order.
-std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n);
-
-}  // namespace tripack::pipeline
+}  // namespace tripack::jobs

@@ -1,0 +1,59 @@
+// What every long computation says about itself while it runs, and how it is asked to stop.
+// One Progress type for all of them (a billiards run, an analysis, a search, a campaign, the
+// atlas, the explorer, the accuracy study, an import), rendered by one function
+// (report/progress_line.hpp); one CancelToken that main() sets on Ctrl-C or SIGTERM. Neither is
+// global: a job receives both.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+
+namespace tripack {
+
+struct Progress {
+  std::string stage;              // the kind of work: "billiards", "relax", "campaign", "atlas", ...
+  std::string item;               // the item under way or just finished, in words
+  long long done = 0, total = 0;  // items of the stage finished and to do (total 0: not counted)
+  long long skipped = 0;          // items an earlier call finished (a resumed campaign)
+  double fraction = -1;           // of the whole job when weighted by cost (-1: done / total)
+  double elapsed = 0;             // seconds since the job (or the run) started
+  bool item_finished = false;     // this report ends an item (else: a snapshot of one under way)
+  long double d = 0;              // the d reached (0: none yet, or not certified)
+  int step = 0;                   // an iterative stage's step (relax), 0 otherwise
+  // A billiards run under way.
+  std::uint64_t events = 0;
+  double relative_gap = 0;  // estimate of 1 - diameter / jammed diameter (0: none)
+  double events_per_second() const { return elapsed > 0 ? static_cast<double>(events) / elapsed : 0; }
+};
+using ProgressFn = std::function<void(const Progress&)>;
+
+// A progress callback that may be called from several threads at once, one call at a time.
+inline ProgressFn serialised(ProgressFn progress) {
+  if (!progress) return {};
+  auto lock = std::make_shared<std::mutex>();
+  return [lock, progress = std::move(progress)](const Progress& p) {
+    std::lock_guard<std::mutex> guard(*lock);
+    progress(p);
+  };
+}
+
+// Asked to stop: the job starts no new item; items under way finish, and its result says it was
+// cancelled and holds what finished.
+class CancelToken {
+ public:
+  void cancel() { cancelled_.store(true); }
+  bool cancelled() const { return cancelled_.load(); }
+  // The first request returns false, every later one true (a second Ctrl-C ends the program).
+  bool cancel_again() { return cancelled_.exchange(true); }
+
+ private:
+  std::atomic<bool> cancelled_{false};
+};
+
+inline bool cancelled(const CancelToken* token) { return token && token->cancelled(); }
+
+}  // namespace tripack
