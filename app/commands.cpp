@@ -278,7 +278,8 @@ int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   const auto result = jobs::compare_constructed(catalogue, o.n, search, {});
   progress.finish();
   print_result(result, o.out);
-  return 0;
+  return result.billiards.runs.size() < static_cast<std::size_t>(result.billiards.runs_asked) ? 130
+                                                                                              : 0;
 }
 
 int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
