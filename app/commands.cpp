@@ -15,28 +15,27 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "core/io.hpp"
+#include "core/timing.hpp"
 #include "jobs/atlas.hpp"
 #include "jobs/atlas_files.hpp"
-#include "jobs/campaign.hpp"
-#include "jobs/import.hpp"
-#include "jobs/stored.hpp"
-#include "report/formats.hpp"
-#include "core/io.hpp"
-#include "pipeline/analyze.hpp"
 #include "jobs/billiards_search.hpp"
-#include "pipeline/build.hpp"
-#include "pipeline/catalogue_checks.hpp"
+#include "jobs/campaign.hpp"
 #include "jobs/compare.hpp"
 #include "jobs/explore.hpp"
-#include "core/timing.hpp"
+#include "jobs/import.hpp"
+#include "jobs/ranks.hpp"
+#include "jobs/stored.hpp"
+#include "pipeline/analyze.hpp"
+#include "pipeline/build.hpp"
+#include "pipeline/catalogue_checks.hpp"
 #include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
 #include "report/fields.hpp"
-#include "report/progress_line.hpp"
-#include "jobs/ranks.hpp"
-#include "report/packing_file.hpp"
+#include "report/formats.hpp"
 #include "report/plot.hpp"
+#include "report/progress_line.hpp"
 
 namespace tripack::app {
 
@@ -253,8 +252,8 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   if (o.n == 0 && o.scene.empty()) throw std::invalid_argument("billiards needs N or --scene FILE");
   const auto dir = o.output_dir.empty() ? std::filesystem::path() : prepare_output_dir(o);
   auto search = search_from(g, o);
-  report::ProgressLine progress(std::cerr,
-                                terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
+  report::ProgressLine progress(
+      std::cerr, terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
   search.progress = progress.callback();
   const auto result = jobs::search_billiards(search);
   progress.finish();
@@ -272,8 +271,8 @@ int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o) {
   if (o.n < 2) throw std::invalid_argument("compare needs N >= 2");
   const Catalogue catalogue = load_catalogue(g);
   auto search = search_from(g, o);
-  report::ProgressLine progress(std::cerr,
-                                terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
+  report::ProgressLine progress(
+      std::cerr, terminal_line(fmt::format("billiards n={}", search.scene.n), o.out));
   search.progress = progress.callback();
   const auto result = jobs::compare_constructed(catalogue, o.n, search, {});
   progress.finish();
@@ -306,10 +305,9 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
     std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
                              atlas_csv.string(), rows.size());
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
-    atlas =
-        report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
-                             std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
-                                                               : std::vector<jobs::AtlasGap>{}};
+    atlas = report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
+                                 std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
+                                                                   : std::vector<jobs::AtlasGap>{}};
   }
   const CancelToken never;
   report::ProgressLine progress(std::cerr, job_line("explore", 0, true));
@@ -522,9 +520,8 @@ int cmd_db_export(const DbExportOptions& o) {
   }
   const auto dir = into_directory ? writable_directory(o.output) : std::filesystem::path();
   for (const auto& r : selected) {
-    const std::filesystem::path path = into_directory
-                                           ? dir / (r.label + chosen.extensions.front())
-                                           : std::filesystem::path(o.output);
+    const std::filesystem::path path = into_directory ? dir / (r.label + chosen.extensions.front())
+                                                      : std::filesystem::path(o.output);
     std::ostringstream bytes;
     chosen.write(bytes, r, write_options(r));
     report::write_file(path, bytes.str());

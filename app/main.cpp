@@ -1,7 +1,7 @@
 // tripack: the command line. Parsing here, the work in app/commands.cpp.
-#include <CLI/CLI.hpp>
 #include <signal.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <exception>
 #include <functional>

@@ -15,8 +15,8 @@
 namespace tripack {
 
 struct Progress {
-  std::string stage;              // the kind of work: "billiards", "relax", "campaign", "atlas", ...
-  std::string item;               // the item under way or just finished, in words
+  std::string stage;  // the kind of work: "billiards", "relax", "campaign", "atlas", ...
+  std::string item;   // the item under way or just finished, in words
   long long done = 0, total = 0;  // items of the stage finished and to do (total 0: not counted)
   long long skipped = 0;          // items an earlier call finished (a resumed campaign)
   double fraction = -1;           // of the whole job when weighted by cost (-1: done / total)
@@ -27,7 +27,9 @@ struct Progress {
   // A billiards run under way.
   std::uint64_t events = 0;
   double relative_gap = 0;  // estimate of 1 - diameter / jammed diameter (0: none)
-  double events_per_second() const { return elapsed > 0 ? static_cast<double>(events) / elapsed : 0; }
+  double events_per_second() const {
+    return elapsed > 0 ? static_cast<double>(events) / elapsed : 0;
+  }
 };
 using ProgressFn = std::function<void(const Progress&)>;
 
@@ -54,6 +56,8 @@ class CancelToken {
   std::atomic<bool> cancelled_{false};
 };
 
-inline bool cancelled(const CancelToken* token) { return token && token->cancelled(); }
+inline bool cancelled(const CancelToken* token) {
+  return token && token->cancelled();
+}
 
 }  // namespace tripack

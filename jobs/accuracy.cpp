@@ -16,11 +16,11 @@
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 #include "core/points.hpp"
-#include "pipeline/analyze.hpp"
-#include "jobs/billiards_search.hpp"
-#include "pipeline/build.hpp"
 #include "core/timing.hpp"
+#include "jobs/billiards_search.hpp"
 #include "jobs/runner.hpp"
+#include "pipeline/analyze.hpp"
+#include "pipeline/build.hpp"
 #include "polish/polish_mp.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
@@ -267,7 +267,8 @@ Stability check_stability(const Packing& start, int copies, std::uint64_t seed) 
   s.copies = copies;
   for (int c = 0; c < copies; ++c) {
     std::mt19937_64 rng(seed + static_cast<std::uint64_t>(c));
-    const pipeline::Analysis a = pipeline::analyze_packing(perturbed(start, kPerturbation, rng), {});
+    const pipeline::Analysis a =
+        pipeline::analyze_packing(perturbed(start, kPerturbation, rng), {});
     const long double spread = std::fabs(a.pattern.packing.d / s.base.pattern.packing.d - 1);
     s.d_spread = std::max(s.d_spread, spread);
     std::string why;
@@ -510,10 +511,11 @@ HardCase large_n_case(const Catalogue& catalogue) {
     all_same = all_same && s.same && as_built;
     spread = std::max(spread, s.d_spread);
     const std::size_t rattlers = s.base.pattern.rattlers.size();
-    members += fmt::format("{}{} {}: {} bonds, {} rattler{}{}, {}{}", members.empty() ? "" : "; ",
-                           n, pipeline::member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
-                           rattlers, rattlers == 1 ? "" : "s", as_built ? "" : " (NOT as built)",
-                           verdict_word(s.base), s.same ? "" : " (" + s.difference + ")");
+    members +=
+        fmt::format("{}{} {}: {} bonds, {} rattler{}{}, {}{}", members.empty() ? "" : "; ", n,
+                    pipeline::member_name(best->pattern.provenance), s.base.pattern.bonds.size(),
+                    rattlers, rattlers == 1 ? "" : "s", as_built ? "" : " (NOT as built)",
+                    verdict_word(s.base), s.same ? "" : " (" + s.difference + ")");
   }
   return {"large n 254-260",
           "hundreds of bonds and up to 10 caged rattlers, built by the matrix-class constructors",
@@ -574,7 +576,8 @@ std::vector<std::pair<std::string, std::function<HardCase()>>> hard_case_measure
   add("large n 254-260", [&catalogue] { return large_n_case(catalogue); });
   add("class 6 near-degenerate", [&catalogue] { return near_degenerate_case(catalogue); });
   add("corner disks (t22a)", [&catalogue] { return corner_case(catalogue); });
-  add("t33 close pair (78 vs 74 bonds)", [dir, progress] { return close_pair_case(dir, progress); });
+  add("t33 close pair (78 vs 74 bonds)",
+      [dir, progress] { return close_pair_case(dir, progress); });
   return cases;
 }
 

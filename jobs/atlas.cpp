@@ -11,15 +11,15 @@
 #include <tuple>
 
 #include "analysis/compare.hpp"
-#include "jobs/stored.hpp"
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
+#include "jobs/runner.hpp"
+#include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
-#include "jobs/runner.hpp"
 #include "polish/polish_mp.hpp"
 #include "store/results_db.hpp"
 
@@ -41,9 +41,9 @@ void centre_and_apply(PackingRecord& record, MultiprecisionPolish polish, long l
   if (polish.converged && !record.pattern.rattlers.empty()) {
     const double room = centre_rattlers_multiprecision(polish, record.pattern.rattlers);
     if (room < -1e-25)
-      errors.push_back(fmt::format(
-          "n = {}: a rattler overlaps its cage by {:.2g} d after centring at {} digits", n, -room,
-          digits));
+      errors.push_back(
+          fmt::format("n = {}: a rattler overlaps its cage by {:.2g} d after centring at {} digits",
+                      n, -room, digits));
   }
   pipeline::apply_multiprecision(record, polish);
 }
@@ -154,7 +154,9 @@ std::vector<AtlasGap> gaps_of(const Catalogue& catalogue, const std::vector<Pack
 
 }  // namespace
 
-std::string atlas_delta(const PackingRecord& row) { return oler_delta_from_L(row.L.str(), row.n()); }
+std::string atlas_delta(const PackingRecord& row) {
+  return oler_delta_from_L(row.L.str(), row.n());
+}
 
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
                         const AtlasSettings& settings, const CancelToken* cancel,

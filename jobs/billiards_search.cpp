@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "analysis/compare.hpp"
-#include "core/ranking.hpp"
 #include "constructors/registry.hpp"
+#include "core/ranking.hpp"
 #include "core/timing.hpp"
 #include "jobs/runner.hpp"
 

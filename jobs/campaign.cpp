@@ -8,11 +8,11 @@
 #include <utility>
 
 #include "analysis/compare.hpp"
-#include "jobs/ranks.hpp"
-#include "jobs/work_unit.hpp"
 #include "core/io.hpp"
 #include "core/precision.hpp"
 #include "core/timing.hpp"
+#include "jobs/ranks.hpp"
+#include "jobs/work_unit.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 
@@ -59,8 +59,6 @@ void check(const CampaignRequest& request, int ranks) {
     throw std::invalid_argument("a campaign scene cannot have initial points (n varies)");
 }
 
-
-
 // The units of the request, in order: every process of an MPI launch computes the same list.
 std::vector<WorkUnit> units_of(const CampaignRequest& request) {
   std::vector<WorkUnit> units;
@@ -71,8 +69,9 @@ std::vector<WorkUnit> units_of(const CampaignRequest& request) {
 }
 
 std::string recorded_line(const store::RunRecord& run) {
-  return fmt::format("recorded n = {} seed = {}: {}", run.n, run.seed,
-                     run.packing ? "d = " + format_significant(std::stold(run.packing->d), 15) : "not certified");
+  return fmt::format(
+      "recorded n = {} seed = {}: {}", run.n, run.seed,
+      run.packing ? "d = " + format_significant(std::stold(run.packing->d), 15) : "not certified");
 }
 
 }  // namespace
@@ -98,7 +97,8 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
   try {
     db.emplace(store::ResultsDb::open(request.db));
   } catch (...) {
-    executor.run_items(JobItems{0, std::vector<std::size_t>{}, items.run, {}}, cancel);  // stop every rank
+    executor.run_items(JobItems{0, std::vector<std::size_t>{}, items.run, {}},
+                       cancel);  // stop every rank
     throw;
   }
   std::vector<std::size_t> pending;
@@ -111,14 +111,16 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
   items.finished = [&](std::size_t i, const std::string& encoded) {
     const store::RunRecord run = decode_run(encoded);
     if (run.n != units[i].n || run.seed != units[i].seed)
-      throw std::runtime_error(fmt::format("a worker sent a run (n = {}, seed = {}) for unit n = {}, seed = {}",
-                                           run.n, run.seed, units[i].n, units[i].seed));
+      throw std::runtime_error(
+          fmt::format("a worker sent a run (n = {}, seed = {}) for unit n = {}, seed = {}", run.n,
+                      run.seed, units[i].n, units[i].seed));
     db->record(run);
     ++result.recorded;
     result.certified += run.packing.has_value();
     result.errors += run.outcome.rfind("error: ", 0) == 0;
     if (progress) {
-      Progress p = counter.finished(recorded_line(run), run.packing ? std::stold(run.packing->d) : 0.0L);
+      Progress p =
+          counter.finished(recorded_line(run), run.packing ? std::stold(run.packing->d) : 0.0L);
       p.skipped = result.skipped;
       progress(p);
     }

@@ -148,11 +148,14 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
                                     const std::vector<PackingRecord>& rows) {
   std::map<long long, const PackingRecord*> best;  // best d for each n, any source
   for (const auto& r : rows)
-    if (!best.count(r.n()) || r.pattern.packing.d > best[r.n()]->pattern.packing.d) best[r.n()] = &r;
+    if (!best.count(r.n()) || r.pattern.packing.d > best[r.n()]->pattern.packing.d)
+      best[r.n()] = &r;
   std::vector<ClassGap> gaps;
   std::set<std::tuple<std::string, long, long>> seen;
   for (const auto& r : rows) {
-    if (!r.from_builder() || !seen.insert({r.pattern.provenance.class_id, r.pattern.provenance.k, r.pattern.provenance.p}).second)
+    if (!r.from_builder() || !seen.insert({r.pattern.provenance.class_id, r.pattern.provenance.k,
+                                           r.pattern.provenance.p})
+                                  .second)
       continue;
     const auto next = best.find(r.n() + 1);
     if (next == best.end()) continue;
@@ -177,13 +180,14 @@ std::vector<ClassGap> class_gaps_of(const Catalogue& catalogue,
 PackingRecord build_row(const Catalogue& catalogue, const BuildRequest& request) {
   const auto start = Clock::now();
   try {
-    return packing_of_build(pipeline::build_and_certify(catalogue, request, pipeline::BuildSettings{}),
-                            seconds_since(start));
+    return packing_of_build(
+        pipeline::build_and_certify(catalogue, request, pipeline::BuildSettings{}),
+        seconds_since(start));
   } catch (const std::exception& certify_error) {
     pipeline::BuildSettings polish_only;
     polish_only.certify = false;
-    PackingRecord row =
-        packing_of_build(pipeline::build_and_certify(catalogue, request, polish_only), seconds_since(start));
+    PackingRecord row = packing_of_build(
+        pipeline::build_and_certify(catalogue, request, polish_only), seconds_since(start));
     row.verdict = std::string("not certified: ") + certify_error.what();
     return row;
   }
@@ -236,8 +240,9 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     const BuildRequest& request = plan.builds[i];
     const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
     report("build",
-           fmt::format("{} (n = {})",
-                       pipeline::member_name({request.class_id, request.k, request.p, request.variant}), n),
+           fmt::format(
+               "{} (n = {})",
+               pipeline::member_name({request.class_id, request.k, request.p, request.variant}), n),
            build_cost(n));
   };
   ThreadExecutor(settings.threads).run_items(builds, &cancel);
@@ -293,7 +298,8 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   // A proven optimum is the best packing of its n: a worse local optimum there (sparse-corner
   // at 13, below sparse-rows' t13a) is no proven optimum.
   std::map<long long, long double> best_d;
-  for (const auto& r : result.packings) best_d[r.n()] = std::max(best_d[r.n()], r.pattern.packing.d);
+  for (const auto& r : result.packings)
+    best_d[r.n()] = std::max(best_d[r.n()], r.pattern.packing.d);
   for (auto& r : result.packings)
     r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n()] * (1 - 1e-12L);
   result.class_gaps = class_gaps_of(catalogue, result.packings);

@@ -1,24 +1,22 @@
 #include "jobs/import.hpp"
 
-#include "core/timing.hpp"
-
 #include <fmt/format.h>
 
 #include <chrono>
 #include <filesystem>
 
 #include "analysis/compare.hpp"
-#include "jobs/stored.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
-#include "pipeline/analyze.hpp"
+#include "core/timing.hpp"
 #include "jobs/runner.hpp"
+#include "jobs/stored.hpp"
+#include "pipeline/analyze.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::jobs {
 
 namespace {
-
 
 // One file read, checked and analysed; `stored` is what goes into the database.
 ImportedPacking analyse_file(const ImportRequest& request, const std::string& path,

@@ -65,7 +65,9 @@ JobOutcome ThreadExecutor::run_items(const JobItems& items, const CancelToken* c
 ProgressCounter::ProgressCounter(std::string stage, long long total)
     : stage_(std::move(stage)), total_(total) {}
 
-double ProgressCounter::elapsed() const { return seconds_since(start_); }
+double ProgressCounter::elapsed() const {
+  return seconds_since(start_);
+}
 
 Progress ProgressCounter::snapshot(std::string item) const {
   Progress p;

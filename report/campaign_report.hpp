@@ -6,7 +6,7 @@
 //  * `tripack db check`: jobs::DbCheck;
 //  * `tripack db import`: jobs::ImportResult;
 //  * `tripack db prune`: jobs::PruneResult.
-// `tripack db export` writes packing files (report/packing_file.hpp), not a rendering.
+// `tripack db export` writes packing files (report/formats.hpp), not a rendering.
 #pragma once
 
 #include <iosfwd>

@@ -43,7 +43,9 @@ std::string progress_text(const std::string& job, const Progress& p, double elap
 ProgressLine::ProgressLine(std::ostream& out, ProgressLineOptions options)
     : out_(out), options_(std::move(options)) {}
 
-ProgressLine::~ProgressLine() { finish(); }
+ProgressLine::~ProgressLine() {
+  finish();
+}
 
 ProgressFn ProgressLine::callback() {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -82,8 +84,7 @@ void ProgressLine::draw() {
 
 void ProgressLine::tick() {
   std::unique_lock<std::mutex> lock(mutex_);
-  while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stopped_; }))
-    draw();
+  while (!wake_.wait_for(lock, std::chrono::milliseconds(200), [this] { return stopped_; })) draw();
 }
 
 void ProgressLine::finish() {

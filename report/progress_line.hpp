@@ -17,11 +17,11 @@
 namespace tripack::report {
 
 struct ProgressLineOptions {
-  std::string job;            // the line's prefix: "billiards n=22", "campaign", "explore", ...
-  bool terminal = false;      // redraw one line (else log lines)
-  double quiet_seconds = 0;   // terminal: draw nothing before this (short builds stay silent)
-  long long log_every = 0;    // log: a line for every log_every-th finished item and the last
-  bool log_stages = false;    // log: a line when the stage changes
+  std::string job;           // the line's prefix: "billiards n=22", "campaign", "explore", ...
+  bool terminal = false;     // redraw one line (else log lines)
+  double quiet_seconds = 0;  // terminal: draw nothing before this (short builds stay silent)
+  long long log_every = 0;   // log: a line for every log_every-th finished item and the last
+  bool log_stages = false;   // log: a line when the stage changes
 };
 
 // The terminal line's text for a report `elapsed` seconds into the job.

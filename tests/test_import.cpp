@@ -23,7 +23,6 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "pipeline/build.hpp"
-#include "report/packing_file.hpp"
 
 namespace tripack::jobs {
 namespace {

@@ -139,8 +139,9 @@ TEST(ProgressLine, TextShowsCountsEtaStageAndLiveRun) {
   p.elapsed = 1.0;  // the run's own seconds: 2 M events/s
   p.relative_gap = 1e-3;
   // A quarter done after 10 s: 30 s to go.
-  EXPECT_EQ(report::progress_text("billiards n=22", p, 10.0),
-            "billiards n=22: 1/4 10.0 s, ETA 30 s: run 3, d = 0.1794, 2.00 M events/s, gap ~1.0e-03");
+  EXPECT_EQ(
+      report::progress_text("billiards n=22", p, 10.0),
+      "billiards n=22: 1/4 10.0 s, ETA 30 s: run 3, d = 0.1794, 2.00 M events/s, gap ~1.0e-03");
   Progress stage;
   stage.stage = "relax";
   stage.step = 7;
@@ -162,7 +163,8 @@ TEST(ProgressLine, ALogGetsOneLinePerFinishedItem) {
   }
   const std::string text = log.str();
   EXPECT_EQ(text.find("campaign: recorded n = 5 seed = 1: d = 0.5 (1/2, "), 0u) << text;
-  EXPECT_NE(text.find("\ncampaign: recorded n = 5 seed = 2: not certified (2/2, "), std::string::npos);
+  EXPECT_NE(text.find("\ncampaign: recorded n = 5 seed = 2: not certified (2/2, "),
+            std::string::npos);
   EXPECT_EQ(text.find("under way"), std::string::npos);
 }
 
