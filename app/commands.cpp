@@ -32,6 +32,7 @@
 #include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
+#include "exact/certificate.hpp"
 #include "report/fields.hpp"
 #include "report/formats.hpp"
 #include "report/plot.hpp"
@@ -357,6 +358,27 @@ int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
         "packing (listed above)",
         atlas.errors.size(), atlas.errors.size() == 1 ? "" : "s", atlas.missing.size(),
         atlas.missing.size() == 1 ? "" : "s"));
+  return 0;
+}
+
+int cmd_exact(const ExactOptions& o) {
+  const auto dir = o.certificates.empty() ? std::filesystem::path() : writable_directory(o.certificates);
+  pipeline::ExactSettings settings;
+  settings.digits = o.digits;
+  settings.max_degree = o.max_degree;
+  settings.existence = o.existence;
+  pipeline::ExactRun run;
+  for (const auto& file : o.files) {
+    run.packings.push_back(pipeline::exact_of_file(file, settings));
+    const auto& r = run.packings.back();
+    // Certificates first: what was proven is kept even if printing fails.
+    if (!dir.empty() && r.configuration && r.configuration->proven) {
+      std::ostringstream text;
+      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration, r.given_tolerance});
+      report::write_file(dir / (r.label + ".gp"), text.str());
+    }
+  }
+  print_result(run, o.out);
   return 0;
 }
 

@@ -93,6 +93,17 @@ struct ExploreOptions {
   std::string atlas;
 };
 // `tripack draw FILE|CLASS`: a diagram of a points file (analysed) or a class member (built).
+// `tripack exact FILE...` (docs/exact.md).
+struct ExactOptions {
+  std::vector<std::string> files;
+  int digits = 300;               // D: found from D digits, confirmed from 2D
+  int max_degree = 48;
+  std::string certificates;       // a directory: LABEL.gp for every proven packing
+  bool existence = true;          // --no-existence: the polynomial only
+  OutputOptions out;
+};
+int cmd_exact(const ExactOptions& o);
+
 struct DrawOptions {
   std::string what;  // a points file, or a class id
   long k = kUnsetK, p = 0;

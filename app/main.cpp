@@ -273,6 +273,23 @@ Action add_db(CLI::App& cli, const GlobalOptions& g, DbCommandOptions& o) {
   };
 }
 
+Action add_exact(CLI::App& cli, ExactOptions& o) {
+  auto* c = cli.add_subcommand(
+      "exact",
+      "The minimal polynomial P of d (integer relation from D digits, confirmed from 2D, "
+      "proven irreducible, root isolated) and a proof that the exact configuration exists");
+  c->add_option("FILE", o.files, "packing files (any layout of 'analyze')")->required();
+  c->add_option("--digits", o.digits, "D: digits the relation is found from (default 300)")
+      ->check(CLI::Range(40, 500));
+  c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
+      ->check(CLI::Range(1, 200));
+  c->add_option("--certificates", o.certificates,
+                "write LABEL.gp (checked by checker/check_exact.sh) here for every proven packing");
+  c->add_flag("!--no-existence", o.existence, "only the polynomial, no proof of statement (I)");
+  add_output_flags(c, o.out);
+  return [c, &o] { return *c ? cmd_exact(o) : -1; };
+}
+
 bool wants_json(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--json") return true;
@@ -350,7 +367,9 @@ int main(int argc, char** argv) {
   CampaignOptions campaign;
   DbCommandOptions db;
   AtlasOptions atlas;
+  ExactOptions exact;
   const std::vector<Action> actions{
+      add_exact(cli, exact),
       add_campaign(cli, g, campaign),
       add_atlas(cli, g, atlas),
       add_db(cli, g, db),

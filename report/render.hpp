@@ -16,6 +16,7 @@
 #include "jobs/billiards_search.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
+#include "pipeline/exact.hpp"
 #include "jobs/compare.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
@@ -51,6 +52,14 @@ void render_csv(std::ostream& out, const pipeline::CatalogueTable& t, const Rend
 void render_text(std::ostream& out, const pipeline::FileAnalysis& a, const RenderOptions& o);
 void render_json(std::ostream& out, const pipeline::FileAnalysis& a, const RenderOptions& o);
 void render_csv(std::ostream& out, const pipeline::FileAnalysis& a, const RenderOptions& o);
+
+// `tripack exact`; the CSV is data/atlas-exact.csv's format (docs/exact.md).
+void render_text(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
+void render_json(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
+void render_csv(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
+// One row of that CSV (no header), and its header.
+std::string exact_csv_header();
+std::string exact_csv_row(const pipeline::ExactResult& r);
 
 void render_text(std::ostream& out, const jobs::BilliardsSearchResult& r,
                  const RenderOptions& o);

@@ -1,0 +1,74 @@
+// FLINT and Arb for exact/*.cpp only (private to exact/): owning wrappers and the shared steps
+// (a decimal value as a ball, an integer relation by LLL, exact polynomial signs).
+#pragma once
+
+#include <arb.h>
+#include <arb_fmpz_poly.h>
+#include <arb_poly.h>
+#include <flint/fmpq.h>
+#include <flint/fmpq_poly.h>
+#include <flint/fmpz.h>
+#include <flint/fmpz_lll.h>
+#include <flint/fmpz_mat.h>
+#include <flint/fmpz_poly.h>
+#include <flint/fmpz_poly_factor.h>
+#include <flint/fmpz_vec.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/algebraic.hpp"
+
+namespace tripack::exact::flint {
+
+// Owning wrappers: construction inits, destruction clears; not copyable.
+#define TRIPACK_FLINT_WRAPPER(Name, type, init, clear) \
+  struct Name {                                        \
+    type value;                                        \
+    Name() { init(value); }                            \
+    ~Name() { clear(value); }                          \
+    Name(const Name&) = delete;                        \
+    Name& operator=(const Name&) = delete;             \
+  };
+TRIPACK_FLINT_WRAPPER(Fmpz, fmpz_t, fmpz_init, fmpz_clear)
+TRIPACK_FLINT_WRAPPER(Fmpq, fmpq_t, fmpq_init, fmpq_clear)
+TRIPACK_FLINT_WRAPPER(FmpzPoly, fmpz_poly_t, fmpz_poly_init, fmpz_poly_clear)
+TRIPACK_FLINT_WRAPPER(FmpqPoly, fmpq_poly_t, fmpq_poly_init, fmpq_poly_clear)
+TRIPACK_FLINT_WRAPPER(Arb, arb_t, arb_init, arb_clear)
+TRIPACK_FLINT_WRAPPER(ArbPoly, arb_poly_t, arb_poly_init, arb_poly_clear)
+#undef TRIPACK_FLINT_WRAPPER
+
+// Working precision in bits for `digits` decimal digits (with guard bits).
+slong bits_for(int digits);
+
+// x = the decimal `text`, a ball whose radius covers a rounding at `digits` significant digits.
+void set_decimal(arb_t x, const std::string& text, int digits, slong prec);
+
+// An integer relation c_0 v_0 + ... + c_{k-1} v_{k-1} ~ 0 among the balls `values` (their
+// midpoints scaled by 10^scale_digits and rounded, then LLL): the first reduced row. None when
+// that row is 0. `relation_digits` gets k * log10(max |c_i|).
+std::optional<std::vector<std::string>> integer_relation(const std::vector<const arb_struct*>& values,
+                                                         int scale_digits, slong prec,
+                                                         double& relation_digits);
+
+void poly_from_strings(fmpz_poly_t poly, const std::vector<std::string>& coefficients);
+IntegerPolynomial strings_from_poly(const fmpz_poly_t poly);
+void fmpq_poly_from_strings(fmpq_poly_t poly, const std::vector<std::string>& coefficients);
+RationalPolynomial strings_from_fmpq_poly(const fmpq_poly_t poly);
+
+// An isolating interval of width ~2 * 10^-width_digits around the ball x for the squarefree
+// polynomial f, or none when the signs or the derivative do not prove it.
+std::optional<IsolatedRoot> isolate_root(const fmpz_poly_t f, const arb_t x, int width_digits,
+                                         slong prec);
+
+// minimal_polynomial (exact/algebraic.hpp) of the ball x2, known to 2 * digits digits.
+MinimalPolynomial minimal_polynomial_of_ball(const arb_t x2, int digits, int max_degree);
+
+// x rounded to `digits` significant digits, its radius widened to cover that rounding.
+void round_ball(arb_t x, const arb_t x2, int digits);
+
+// The ball [low, high] of an isolated root.
+void ball_of(arb_t x, const IsolatedRoot& root, slong prec);
+
+}  // namespace tripack::exact::flint

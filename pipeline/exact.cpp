@@ -1,0 +1,122 @@
+#include "pipeline/exact.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/timing.hpp"
+#include "polish/polish_mp.hpp"
+
+namespace tripack::pipeline {
+
+namespace {
+
+// The file's coordinates as written ("x y" lines), when it has exactly n of them, and its label.
+struct FileText {
+  std::vector<std::array<std::string, 2>> points;
+  std::string label;
+};
+
+FileText text_of(const std::string& file) {
+  FileText out;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("# label:", 0) == 0) {
+      std::istringstream words(line.substr(8));
+      words >> out.label;
+    }
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    std::string x, y, extra;
+    if (!(words >> x >> y) || (words >> extra)) return {{}, out.label};
+    out.points.push_back({x, y});
+  }
+  return out;
+}
+
+// Decimal places of the given coordinates (the fewest among them).
+int decimals_of(const std::vector<std::array<std::string, 2>>& points) {
+  int fewest = 1000000;
+  for (const auto& p : points)
+    for (const auto& c : p) {
+      const auto dot = c.find('.');
+      fewest = std::min(fewest, dot == std::string::npos ? 0 : static_cast<int>(c.size() - dot - 1));
+    }
+  return fewest;
+}
+
+}  // namespace
+
+ExactResult exact_of_file(const std::string& file, const ExactSettings& settings) {
+  if (settings.digits < 40) throw std::invalid_argument("exact: --digits must be at least 40");
+  if (2 * settings.digits > 1000)
+    throw std::invalid_argument("exact: --digits must be at most 500 (the polish gives 2D <= 1000 digits)");
+  ExactResult result;
+  result.file = file;
+  AnalyzeRequest request;
+  request.file = file;
+  const FileAnalysis analysed = analyze_file(request);
+  const Analysis& analysis = analysed.analysis;
+  result.pattern = analysis.pattern;
+  result.n = static_cast<int>(analysis.pattern.packing.size());
+  FileText text = text_of(file);
+  result.label = text.label.empty() ? std::filesystem::path(file).stem().string() : text.label;
+  if (!analysis.certified()) {
+    result.reason = "the packing is not certified: " + analysis.status();
+    return result;
+  }
+  const auto start = Clock::now();
+  MultiprecisionPolish polish = polish_multiprecision(analysis.pattern.packing, analysis.pattern.bonds,
+                                                      analysis.pattern.rattlers, 2 * settings.digits);
+  if (polish.converged && !analysis.pattern.rattlers.empty())
+    centre_rattlers_multiprecision(polish, analysis.pattern.rattlers);
+  result.seconds_polish = seconds_since(start);
+  if (!polish.converged) {
+    result.reason = fmt::format("the {}-digit polish did not converge", 2 * settings.digits);
+    return result;
+  }
+  result.d = polish.d;
+  const auto t1 = Clock::now();
+  result.polynomial = exact::minimal_polynomial(polish.d, settings.digits, settings.max_degree);
+  result.seconds_polynomial = seconds_since(t1);
+  if (!result.polynomial.found) {
+    result.reason = result.polynomial.reason;
+    return result;
+  }
+  if (!settings.existence) {
+    result.reason = "statement (I) not attempted";
+    return result;
+  }
+  // The given points: the file's own text when it is "x y" lines with enough digits for the
+  // 10^-25 claim, else the polished points at 40 digits (the claim is then about those).
+  exact::ConfigurationInput& input = result.input;
+  input.n = result.n;
+  input.bonds = analysis.pattern.bonds;
+  input.rattlers = analysis.pattern.rattlers;
+  input.d = polish.d;
+  input.points = polish.points;
+  input.digits = settings.digits;
+  if (static_cast<int>(text.points.size()) == result.n && decimals_of(text.points) >= 27) {
+    input.given = text.points;
+    result.given_tolerance = "1e-25";
+  } else {
+    for (const auto& p : polish.points) input.given.push_back({p[0].substr(0, 42), p[1].substr(0, 42)});
+    result.given_tolerance = "1e-25";
+    result.reason = "the file's coordinates have fewer than 27 decimals: the certificate's given points are the polish's";
+  }
+  const auto t2 = Clock::now();
+  result.configuration = exact::prove_existence(input, result.polynomial);
+  result.seconds_existence = seconds_since(t2);
+  if (result.configuration->proven) {
+    result.proof = "existence";
+    if (result.reason.empty()) result.reason = "statement (II) not attempted yet";
+  } else {
+    result.reason = result.configuration->reason;
+  }
+  return result;
+}
+
+}  // namespace tripack::pipeline

@@ -1,0 +1,46 @@
+// Exact d(n) of one packing file (docs/exact.md): analyse it (bonds, rattlers), polish its bond
+// system to 2D digits (MPFR; rattlers centred), find d's minimal polynomial P from D digits and
+// confirm it from 2D (exact/algebraic.hpp), then prove statement (I), the exact configuration
+// (exact/configuration.hpp). Prints nothing.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exact/algebraic.hpp"
+#include "exact/configuration.hpp"
+#include "pipeline/analyze.hpp"
+
+namespace tripack::pipeline {
+
+struct ExactSettings {
+  int digits = 300;       // D: the relation is found from D digits, confirmed from 2D
+  int max_degree = 48;    // of P
+  bool existence = true;  // also prove statement (I)
+};
+
+struct ExactResult {
+  std::string file;
+  int n = 0;
+  std::string label;  // the file's "# label:" line, else its name
+  Pattern pattern;    // bonds and rattlers as analysed
+  std::string d;      // to 2D digits
+  exact::MinimalPolynomial polynomial;
+  std::optional<exact::ExactConfiguration> configuration;
+  exact::ConfigurationInput input;  // what statement (I) was proven for (the certificate's data)
+  std::string given_tolerance;      // the claimed distance to the file's points ("1e-25")
+  // "exact" (statements I and II), "existence" (I), "none"; reason: what stopped it.
+  std::string proof = "none", reason;
+  double seconds_polish = 0, seconds_polynomial = 0, seconds_existence = 0;
+};
+
+// What `tripack exact` returns: one result per file.
+struct ExactRun {
+  std::vector<ExactResult> packings;
+};
+
+// Throws InputError for a file that cannot be read, std::invalid_argument for bad settings.
+ExactResult exact_of_file(const std::string& file, const ExactSettings& settings);
+
+}  // namespace tripack::pipeline

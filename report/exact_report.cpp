@@ -1,0 +1,95 @@
+// Renderers of `tripack exact` (report/render.hpp).
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "report/render.hpp"
+
+namespace tripack::report {
+
+namespace {
+
+double seconds_of(const pipeline::ExactResult& r) {
+  return r.seconds_polish + r.seconds_polynomial + r.seconds_existence;
+}
+
+// CSV field: quoted when it holds a comma, a quote or a newline.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::string exact_csv_header() { return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds"; }
+
+std::string exact_csv_row(const pipeline::ExactResult& r) {
+  const auto& p = r.polynomial;
+  return fmt::format("{},{},{},{},{},{},{},{},{:.2f}", r.n, csv_field(r.label),
+                     p.found ? std::to_string(p.polynomial.degree()) : "",
+                     p.found ? csv_field(p.polynomial.pari("x")) : "", p.found ? p.root.low : "",
+                     p.found ? p.root.high : "", r.proof, csv_field(r.reason), seconds_of(r));
+}
+
+void render_csv(std::ostream& out, const pipeline::ExactRun& run, const RenderOptions&) {
+  out << exact_csv_header() << "\n";
+  for (const auto& r : run.packings) out << exact_csv_row(r) << "\n";
+}
+
+void render_text(std::ostream& out, const pipeline::ExactRun& run, const RenderOptions&) {
+  for (const auto& r : run.packings) {
+    out << fmt::format("{} (n = {}): proof {}\n", r.label, r.n, r.proof);
+    const auto& p = r.polynomial;
+    if (p.found) {
+      out << fmt::format("  P = {}\n", p.polynomial.pari("x"));
+      out << fmt::format("  degree {}, coefficients up to {} digits; irreducible over Q; found from {} digits, "
+                         "confirmed from {}\n",
+                         p.polynomial.degree(), p.polynomial.height_digits(), p.digits, p.confirmed_digits);
+      out << fmt::format("  d is its only root in [{}, {}]\n", p.root.low, p.root.high);
+      out << fmt::format("  d = {}\n", r.d.substr(0, 62));
+    }
+    if (r.configuration && r.configuration->proven)
+      out << fmt::format("  statement (I): the exact configuration exists in a field of degree {}; "
+                         "given points within {:.1g}; smallest non-bond margin {:.3g} d\n",
+                         r.configuration->field.degree(), r.configuration->largest_offset,
+                         r.configuration->smallest_margin);
+    if (!r.reason.empty()) out << "  " << r.reason << "\n";
+    out << fmt::format("  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f})\n", seconds_of(r),
+                       r.seconds_polish, r.seconds_polynomial, r.seconds_existence);
+  }
+}
+
+void render_json(std::ostream& out, const pipeline::ExactRun& run, const RenderOptions&) {
+  nlohmann::json packings = nlohmann::json::array();
+  for (const auto& r : run.packings) {
+    nlohmann::json j;
+    j["file"] = r.file;
+    j["n"] = r.n;
+    j["label"] = r.label;
+    j["proof"] = r.proof;
+    j["reason"] = r.reason;
+    j["seconds"] = seconds_of(r);
+    if (r.polynomial.found) {
+      j["polynomial"] = r.polynomial.polynomial.pari("x");
+      j["degree"] = r.polynomial.polynomial.degree();
+      j["root_low"] = r.polynomial.root.low;
+      j["root_high"] = r.polynomial.root.high;
+      j["digits"] = r.polynomial.digits;
+      j["confirmed_digits"] = r.polynomial.confirmed_digits;
+      j["d"] = r.d;
+    }
+    if (r.configuration && r.configuration->proven) {
+      j["field"] = r.configuration->field.pari("t");
+      j["field_degree"] = r.configuration->field.degree();
+      j["largest_offset"] = r.configuration->largest_offset;
+      j["smallest_margin"] = r.configuration->smallest_margin;
+    }
+    packings.push_back(j);
+  }
+  out << nlohmann::json{{"packings", packings}}.dump(2) << "\n";
+}
+
+}  // namespace tripack::report
