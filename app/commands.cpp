@@ -23,6 +23,7 @@
 #include "jobs/campaign.hpp"
 #include "jobs/compare.hpp"
 #include "jobs/explore.hpp"
+#include "jobs/exact_atlas.hpp"
 #include "jobs/import.hpp"
 #include "jobs/ranks.hpp"
 #include "jobs/stored.hpp"
@@ -380,6 +381,32 @@ int cmd_exact(const ExactOptions& o) {
   }
   print_result(run, o.out);
   return 0;
+}
+
+int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o) {
+  jobs::ExactAtlasSettings settings;
+  settings.atlas = o.atlas.empty() ? TRIPACK_DEFAULT_ATLAS : o.atlas;
+  settings.out = o.out.empty() ? settings.atlas.parent_path() : std::filesystem::path(o.out);
+  writable_directory(settings.out.string());
+  settings.exact.digits = o.digits;
+  settings.exact.max_degree = o.max_degree;
+  settings.threads = o.threads;
+  std::stringstream items(o.n_range);
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto [a, b] = parse_range(item, "--n");
+    for (long n = a; n <= b; ++n) settings.n_values.push_back(n);
+  }
+  report::ProgressLine progress(std::cerr, job_line("exact-atlas", 1, false));
+  const auto result = jobs::build_exact_atlas(settings, g.cancel, progress.callback());
+  progress.finish();
+  std::map<std::string, int> proofs;
+  for (const auto& r : result.done) ++proofs[r.proof];
+  std::cout << fmt::format(
+      "exact atlas: {} rows, {} already done, {} done now (exact {}, existence {}, none {}) in {:.1f} s; "
+      "table: {}\n",
+      result.rows, result.skipped, result.done.size(), proofs["exact"], proofs["existence"],
+      proofs["none"], result.seconds, (settings.out / "atlas-exact.csv").string());
+  return result.cancelled ? 130 : 0;
 }
 
 int cmd_draw(const GlobalOptions& g, const DrawOptions& o) {

@@ -104,6 +104,17 @@ struct ExactOptions {
 };
 int cmd_exact(const ExactOptions& o);
 
+// `tripack exact-atlas` (docs/exact.md): every atlas row, resumable.
+struct ExactAtlasOptions {
+  std::string atlas;     // empty: the project's data/atlas.csv
+  std::string out;       // empty: the atlas's directory
+  std::string n_range;   // "A..B", "N" or a list; empty: every row
+  int digits = 300;
+  int max_degree = 48;
+  int threads = 2;
+};
+int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o);
+
 struct DrawOptions {
   std::string what;  // a points file, or a class id
   long k = kUnsetK, p = 0;

@@ -290,6 +290,21 @@ Action add_exact(CLI::App& cli, ExactOptions& o) {
   return [c, &o] { return *c ? cmd_exact(o) : -1; };
 }
 
+Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions& o) {
+  auto* c = cli.add_subcommand(
+      "exact-atlas",
+      "'exact' on every atlas row: DIR/atlas-exact.csv and DIR/exact/LABEL.gp, resumable (a rerun "
+      "skips the rows already in the table)");
+  c->add_option("--atlas", o.atlas, "the atlas table (default: the project's data/atlas.csv)");
+  c->add_option("--out", o.out, "where atlas-exact.csv and exact/ go (default: the atlas's directory)");
+  c->add_option("--n", o.n_range, "only these n: A..B, N or a comma-separated list of them");
+  c->add_option("--digits", o.digits, "D (default 300)")->check(CLI::Range(40, 500));
+  c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
+      ->check(CLI::Range(1, 200));
+  c->add_option("--threads", o.threads, "rows at once (default 2)")->check(CLI::Range(1, 256));
+  return [c, &g, &o] { return *c ? cmd_exact_atlas(g, o) : -1; };
+}
+
 bool wants_json(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--json") return true;
@@ -311,7 +326,7 @@ bool observes_cancel(const CLI::App& cli) {
     if (name == "db")
       for (const auto* sub : command->get_subcommands()) return sub->get_name() == "import";
     return name == "explore" || name == "atlas" || name == "campaign" || name == "billiards" ||
-           name == "compare";
+           name == "compare" || name == "exact-atlas";
   }
   return false;
 }
@@ -368,8 +383,10 @@ int main(int argc, char** argv) {
   DbCommandOptions db;
   AtlasOptions atlas;
   ExactOptions exact;
+  ExactAtlasOptions exact_atlas;
   const std::vector<Action> actions{
       add_exact(cli, exact),
+      add_exact_atlas(cli, g, exact_atlas),
       add_campaign(cli, g, campaign),
       add_atlas(cli, g, atlas),
       add_db(cli, g, db),

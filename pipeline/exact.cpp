@@ -102,6 +102,8 @@ ExactResult exact_of_file(const std::string& file, const ExactSettings& settings
   if (static_cast<int>(text.points.size()) == result.n && decimals_of(text.points) >= 27) {
     input.given = text.points;
     result.given_tolerance = "1e-25";
+    // A rattler is free in its cage: it stays where the file has it (checked strictly apart).
+    for (int r : analysis.pattern.rattlers) input.points[static_cast<std::size_t>(r)] = text.points[static_cast<std::size_t>(r)];
   } else {
     for (const auto& p : polish.points) input.given.push_back({p[0].substr(0, 42), p[1].substr(0, 42)});
     result.given_tolerance = "1e-25";

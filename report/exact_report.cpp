@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "jobs/exact_atlas.hpp"
 #include "report/render.hpp"
 
 namespace tripack::report {
@@ -14,29 +15,11 @@ double seconds_of(const pipeline::ExactResult& r) {
   return r.seconds_polish + r.seconds_polynomial + r.seconds_existence;
 }
 
-// CSV field: quoted when it holds a comma, a quote or a newline.
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 }  // namespace
 
-std::string exact_csv_header() { return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds"; }
-
-std::string exact_csv_row(const pipeline::ExactResult& r) {
-  const auto& p = r.polynomial;
-  return fmt::format("{},{},{},{},{},{},{},{},{:.2f}", r.n, csv_field(r.label),
-                     p.found ? std::to_string(p.polynomial.degree()) : "",
-                     p.found ? csv_field(p.polynomial.pari("x")) : "", p.found ? p.root.low : "",
-                     p.found ? p.root.high : "", r.proof, csv_field(r.reason), seconds_of(r));
-}
-
 void render_csv(std::ostream& out, const pipeline::ExactRun& run, const RenderOptions&) {
-  out << exact_csv_header() << "\n";
-  for (const auto& r : run.packings) out << exact_csv_row(r) << "\n";
+  out << jobs::exact_csv_header() << "\n";
+  for (const auto& r : run.packings) out << jobs::exact_csv_row(r) << "\n";
 }
 
 void render_text(std::ostream& out, const pipeline::ExactRun& run, const RenderOptions&) {

@@ -57,9 +57,6 @@ void render_csv(std::ostream& out, const pipeline::FileAnalysis& a, const Render
 void render_text(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
 void render_json(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
 void render_csv(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
-// One row of that CSV (no header), and its header.
-std::string exact_csv_header();
-std::string exact_csv_row(const pipeline::ExactResult& r);
 
 void render_text(std::ostream& out, const jobs::BilliardsSearchResult& r,
                  const RenderOptions& o);

@@ -23,6 +23,9 @@ PKGS=(
   gnuplot-nox          # draws the delta(n) and accuracy plots (svg, pngcairo, pdfcairo terminals)
   libgtest-dev googletest libbenchmark-dev
   chromium             # headless browser: the test renders the explorer's index.html
+  libflint-dev         # exact d(n): LLL integer relations, exact factorisation, rational polynomials
+  libflint-arb-dev     # exact d(n): ball arithmetic for root isolation and the embedding checks
+  pari-gp              # the independent checker of exact certificates (checker/, shares no code)
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -1,0 +1,155 @@
+#include "jobs/exact_atlas.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/timing.hpp"
+#include "exact/certificate.hpp"
+#include "jobs/atlas_files.hpp"
+#include "jobs/runner.hpp"
+
+namespace tripack::jobs {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The labels already in the table (its second column).
+std::set<std::string> labels_in(const fs::path& csv) {
+  std::set<std::string> labels;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    const auto a = line.find(','), b = line.find(',', a + 1);
+    if (a != std::string::npos && b != std::string::npos) labels.insert(line.substr(a + 1, b - a - 1));
+  }
+  return labels;
+}
+
+// The table in the atlas's order (rows of labels the atlas no longer has go last), written to a
+// temporary file and renamed over the old one.
+void sort_table(const fs::path& csv, const std::vector<std::string>& order, const std::string& header) {
+  std::map<std::string, std::size_t> rank;
+  for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::pair<std::size_t, std::string>> rows;
+  while (std::getline(in, line)) {
+    const auto a = line.find(','), b = line.find(',', a + 1);
+    const std::string label = a == std::string::npos ? "" : line.substr(a + 1, b - a - 1);
+    rows.emplace_back(rank.count(label) ? rank[label] : order.size(), line);
+  }
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  const fs::path temporary = csv.string() + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << header << "\n";
+    for (const auto& r : rows) out << r.second << "\n";
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, csv);
+}
+
+// CSV field: quoted when it holds a comma, a quote or a newline.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::string exact_csv_header() { return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds"; }
+
+std::string exact_csv_row(const pipeline::ExactResult& r) {
+  const auto& p = r.polynomial;
+  return fmt::format("{},{},{},{},{},{},{},{},{:.2f}", r.n, csv_field(r.label),
+                     p.found ? std::to_string(p.polynomial.degree()) : "",
+                     p.found ? csv_field(p.polynomial.pari("x")) : "", p.found ? p.root.low : "",
+                     p.found ? p.root.high : "", r.proof, csv_field(r.reason),
+                     r.seconds_polish + r.seconds_polynomial + r.seconds_existence);
+}
+
+ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const CancelToken* cancel,
+                                   const ProgressFn& progress) {
+  const auto start = Clock::now();
+  const std::vector<PackingRecord> rows = read_atlas(settings.atlas);
+  fs::create_directories(settings.out / "exact");
+  const fs::path csv = settings.out / "atlas-exact.csv";
+  const std::string header = exact_csv_header();
+  if (!fs::exists(csv)) {
+    std::ofstream out(csv);
+    out << header << "\n";
+    if (!out) throw std::runtime_error("cannot write " + csv.string());
+  }
+  const std::set<std::string> done = labels_in(csv);
+  ExactAtlasResult result;
+  std::vector<std::size_t> todo;
+  std::vector<std::string> order;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    if (!settings.n_values.empty() &&
+        std::find(settings.n_values.begin(), settings.n_values.end(), row.n()) == settings.n_values.end())
+      continue;
+    order.push_back(row.label);
+    ++result.rows;
+    if (done.count(row.label))
+      ++result.skipped;
+    else
+      todo.push_back(i);
+  }
+  // Largest n first: the slowest start early.
+  std::stable_sort(todo.begin(), todo.end(),
+                   [&](std::size_t a, std::size_t b) { return rows[a].n() > rows[b].n(); });
+  std::vector<pipeline::ExactResult> found(rows.size());
+  std::ofstream table(csv, std::ios::app);
+  ProgressCounter counter("exact", static_cast<long long>(todo.size()));
+  JobItems items;
+  items.count = rows.size();
+  items.order = todo;
+  items.run = [&](std::size_t i) {
+    const PackingRecord& row = rows[i];
+    pipeline::ExactResult& r = found[i];
+    try {
+      r = pipeline::exact_of_file((settings.atlas.parent_path() / row.file).string(), settings.exact);
+    } catch (const std::exception& e) {
+      r.n = static_cast<int>(row.n());
+      r.reason = e.what();
+    }
+    r.label = row.label;
+    return std::string();
+  };
+  items.finished = [&](std::size_t i, const std::string&) {
+    const pipeline::ExactResult& r = found[i];
+    if (r.configuration && r.configuration->proven) {
+      std::ofstream cert(settings.out / "exact" / (r.label + ".gp"));
+      exact::write_certificate(cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.given_tolerance});
+      if (!cert) throw std::runtime_error("cannot write the certificate of " + r.label);
+    }
+    table << exact_csv_row(r) << "\n" << std::flush;
+    if (!table) throw std::runtime_error("cannot append to " + csv.string());
+    result.done.push_back(r);
+    if (progress)
+      progress(counter.finished(fmt::format("{} (n = {}): {}{}", r.label, r.n, r.proof,
+                                            r.polynomial.found
+                                                ? fmt::format(", degree {}", r.polynomial.polynomial.degree())
+                                                : "")));
+  };
+  result.cancelled = ThreadExecutor(settings.threads).run_items(items, cancel).cancelled;
+  table.close();
+  sort_table(csv, order, header);
+  result.seconds = seconds_since(start);
+  return result;
+}
+
+}  // namespace tripack::jobs
