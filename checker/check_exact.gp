@@ -34,44 +34,45 @@ default(secure, 1);
 \\ read, system, install, eval, ...) except a few pure constructors, and must not contain a GP
 \\ metacommand or a line continuation (a backslash outside a string or a \\ comment). Without
 \\ this a certificate could print "ACCEPTED" and quit(0) by itself.
-\\ Returns [reason, ""] (reason non-empty) or ["", text to eval].
+\\ Returns ["", text to eval], [reason, ""] when the file cannot be read, [reason, "unsafe"]
+\\ when it is not safe.
 ck_scan(f) =
 {
   my(L, s, o, N, i, j, c, id, depth = 0, isal,
      allow = Set(["Mod", "Pol", "Polrev", "Vec", "Col", "Mat", "vector", "matrix", "concat"]));
   isal = (c -> (c >= 48 && c <= 57) || (c >= 65 && c <= 90) || (c >= 97 && c <= 122) || c == 95);
-  L = iferr(readstr(f), E, return([Str("cannot read ", f, ": ", E), ""]));
+  L = iferr(readstr(f), E, return([Str("cannot read ", f, ": ", E), ""]));  \\ "" marks a read failure
   s = Vecsmall(strjoin(L, "\n")); N = #s; o = s; i = 1;
   while(i <= N,
     c = s[i];
     if(c == 34, \\ string literal: copied; skip to the closing quote, honouring backslash escapes
       i++; while(i <= N && s[i] != 34, if(s[i] == 92, i++); i++);
-      if(i > N, return(["unterminated string", ""])); i++; next);
+      if(i > N, return(["unterminated string", "unsafe"])); i++; next);
     if(c == 92, \\ backslash: only the comment \\ ... end of line is allowed
       if(i < N && s[i + 1] == 92, while(i <= N && s[i] != 10, o[i] = 32; i++); next);
-      return([Str("backslash outside a string or \\\\ comment (metacommand, continuation or \\ operator) at byte ", i), ""]));
+      return([Str("backslash outside a string or \\\\ comment (metacommand, continuation or \\ operator) at byte ", i), "unsafe"]));
     if(c == 47 && i < N && s[i + 1] == 42, \\ /* comment */
       o[i] = 32; o[i + 1] = 32; i += 2;
       while(i < N && !(s[i] == 42 && s[i + 1] == 47), if(s[i] != 10, o[i] = 32); i++);
-      if(i >= N, return(["unterminated /* comment", ""])); o[i] = 32; o[i + 1] = 32; i += 2; next);
+      if(i >= N, return(["unterminated /* comment", "unsafe"])); o[i] = 32; o[i + 1] = 32; i += 2; next);
     if(c == 123, depth++; o[i] = 32; i++; next);
-    if(c == 125, depth--; if(depth < 0, return(["unbalanced } ", ""])); o[i] = 32; i++; next);
+    if(c == 125, depth--; if(depth < 0, return(["unbalanced } ", "unsafe"])); o[i] = 32; i++; next);
     if(c == 10 || c == 13, o[i] = if(depth == 0 && c == 10, 59, 32); i++; next);
     if((c >= 65 && c <= 90) || (c >= 97 && c <= 122) || c == 95, \\ identifier
       j = i; while(j <= N && isal(s[j]), j++);
       id = Strchr(s[i .. j - 1]);
       if(!setsearch(allow, id) && iferr(eval(Str("'", id)); 0, E, 1),
-        return([Str("calls the GP built-in '", id, "' (a certificate may only assign data)"), ""]));
+        return([Str("calls the GP built-in '", id, "' (a certificate may only assign data)"), "unsafe"]));
       i = j; next);
     if(c >= 48 && c <= 57, while(i <= N && isal(s[i]), i++); next); \\ number: 1e5, 10^-25 ...
     i++);
-  if(depth != 0, return(["unbalanced {", ""]));
+  if(depth != 0, return(["unbalanced {", "unsafe"]));
   ["", Strchr(o)];
 }
 
-ck_scan_result = ck_scan(ck_file);
+ck_scan_result = iferr(ck_scan(ck_file), E, [Str("the scan stopped on a GP error: ", E), "unsafe"]);
 if(ck_scan_result[1] != "", \
-  print("FAIL read: ", ck_scan_result[1]); \
+  print(if(ck_scan_result[2] == "", "FAIL read: ", "FAIL safety: "), ck_scan_result[1]); \
   print("certificate ", ck_file, ": REJECTED (unsafe or unreadable file, not executed)"); quit(1));
 ck_read_error = iferr(eval(ck_scan_result[2]); "", E, Str(E));
 if(ck_read_error != "", \
@@ -103,7 +104,7 @@ ck_run(name, body) =
   my(r = iferr(body(), E, [0, Str("error: ", E)]));
   ck_report(r[1], name, r[2]);
 }
-ck_fmt(r) = Strchr([c | c <- Vecsmall(Strprintf("%.3e", r)), c != 32]);
+ck_fmt(r) = if(abs(r) < 10^(-ck_digits), Str("0 (|.| < 1e-", ck_digits, ")"), Strchr([c | c <- Vecsmall(Strprintf("%.3e", r)), c != 32]));
 ck_israt(v) = my(ty = type(v)); ty == "t_INT" || ty == "t_FRAC";
 \\ an element of K as written in the certificate: a rational or a polynomial in t with
 \\ rational coefficients
@@ -159,9 +160,10 @@ ck_check_structure() =
   if(!ck_report(#e == 0, "types", if(#e, strjoin(Vec(e), "; "), "every variable has the type of format 1")),
     ck_skip("all further checks", "the certificate's variables do not have the types of format 1"); ck_finish());
 
-  ok = ck_report(n >= 2 && #points == n && #given == n, "sizes",
-    Str("n = ", n, ", ", #points, " points, ", #given, " given points", if(n < 2, " (n must be at least 2)", "")));
-  ok = ck_check_rattler_indices() && ok;
+  if(!ck_report(n >= 2 && #points == n && #given == n, "sizes",
+      Str("n = ", n, ", ", #points, " points, ", #given, " given points", if(n < 2, " (n must be at least 2)", ""))),
+    ck_skip("all further checks", "n, points and given disagree"); ck_finish());
+  ok = ck_check_rattler_indices();
   ok = ck_check_bond_indices() && ok;
   ok = ck_check_coordinates() && ok;
   if(!ok, ck_skip("all further checks", "sizes, indices or coordinates are invalid"); ck_finish());
@@ -343,7 +345,7 @@ ck_check_numeric() =
         if(#badw, Str("; ", #badw, " point-wall pairs NOT strictly inside, first ", badw[1]), "")));
   ck_note(Str("given-distance, separation and walls are high-precision floating-point checks at ", ck_digits,
     " digits (gp has no interval arithmetic), not interval bounds; a strict inequality needs a margin > 1e-", ck_digits / 2,
-    "; smallest margin found ", ck_fmt(min(pm, wm))));
+    "; smallest margin found ", if(min(pm, wm) == oo, "none (no inequality to check)", ck_fmt(min(pm, wm)))));
 }
 
 ck_main() =
