@@ -43,10 +43,11 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
   out << fmt::format("d_in_K = {};\n", c.d_in_field.pari("t"));
   out << fmt::format("sqrt3_in_K = {};\n", c.sqrt3_in_field.pari("t"));
   out << "\\\\ the exact points: polynomials in t (rattlers: rationals)\n";
-  out << "points = [";
+  // Multi-line values in braces: GP ends a statement at a newline outside { }.
+  out << "{points = [";
   for (std::size_t i = 0; i < c.points.size(); ++i)
     out << (i ? ",\n  " : "\n  ") << "[" << c.points[i][0].pari("t") << ", " << c.points[i][1].pari("t") << "]";
-  out << "];\n";
+  out << "];}\n";
   out << "rattlers = [";
   for (std::size_t i = 0; i < in.rattlers.size(); ++i) out << (i ? ", " : "") << in.rattlers[i] + 1;
   out << "];\n";
@@ -58,11 +59,11 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
   }
   out << "];\n";
   out << "\\\\ the packing as given; every exact point lies within given_tolerance of it\n";
-  out << "given = [";
+  out << "{given = [";
   for (std::size_t i = 0; i < in.given.size(); ++i)
     out << (i ? ",\n  " : "\n  ") << "[" << gp_rational(in.given[i][0]) << ", " << gp_rational(in.given[i][1])
         << "]";
-  out << "];\n";
+  out << "];}\n";
   out << fmt::format("given_tolerance = {};\n", data.given_tolerance == "1e-25" ? "10^-25" : data.given_tolerance);
   out << "claims = [\"existence\"];\n";
 }
