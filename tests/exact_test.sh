@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# tripack exact end to end: certificates of real atlas packings are written and the independent
+# checker (checker/check_exact.sh, PARI/GP, no code shared with tripack) accepts them; copies with a
+# changed coefficient of P, a removed bond, a moved coordinate or a wrong root are rejected.
+# GL1995's closed form for n = 13 and the values 1/sqrt(3) (n = 4) are the reference polynomials.
+# Usage: tests/exact_test.sh path/to/tripack
+set -u
+TRIPACK=${1:?usage: exact_test.sh path/to/tripack}
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+root=$(cd "$here/.." && pwd)
+CHECK=$root/checker/check_exact.sh
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0
+fail=0
+ok() { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# The polynomials: n = 4, d = 1/sqrt(3): 3x^2 - 1; n = 13: GL1995's 4x^4 - 144x^3 + 180x^2 - 72x + 9.
+for f in t4a t13a t22a t17b; do
+  "$TRIPACK" exact "$root/data/atlas/$f.txt" --digits 120 --certificates "$tmp" --json >"$tmp/$f.json" 2>"$tmp/$f.err" ||
+    bad "exact $f failed: $(cat "$tmp/$f.err")"
+done
+grep -q '"polynomial": "3\*x^2 - 1"' "$tmp/t4a.json" && ok || bad "t4a: P is not 3*x^2 - 1"
+grep -q '"polynomial": "4\*x^4 - 144\*x^3 + 180\*x^2 - 72\*x + 9"' "$tmp/t13a.json" && ok ||
+  bad "t13a: P is not GL1995's closed form"
+for f in t4a t13a t22a t17b; do
+  grep -q '"proof": "existence"' "$tmp/$f.json" && ok || bad "$f: statement (I) not proven"
+done
+
+# The checker accepts every real certificate.
+out=$(bash "$CHECK" "$tmp"/t*.gp 2>&1)
+if [ $? -eq 0 ] && grep -qx '4 certificates: 4 accepted, 0 rejected' <<<"$out"; then ok; else
+  bad "the checker should accept the 4 certificates:"$'\n'"$(grep -E 'FAIL|certificates' <<<"$out")"; fi
+
+# expect_reject WHAT FILE
+expect_reject() {
+  local out rc
+  out=$(bash "$CHECK" "$2" 2>&1)
+  rc=$?
+  if [ "$rc" -ne 0 ] && grep -q 'REJECTED' <<<"$out" && ! grep -q 'ACCEPTED' <<<"$out"; then ok; else
+    bad "$1 should be rejected (rc=$rc)"; fi
+}
+cert=$tmp/t22a.gp
+mkdir -p "$tmp/tampered"
+# (a) a changed coefficient of P: the constant term + 1.
+sed -E '/^P = /s/;$/ + 1;/' "$cert" >"$tmp/tampered/a.gp"
+# (b) a removed disk-disk bond (the first one).
+sed -E '/^bonds = /s/\[[0-9]+, [0-9]+\], //' "$cert" >"$tmp/tampered/b.gp"
+# (c) a moved coordinate: the first point's x plus 10^-30.
+awk '/^\{points = \[/ {print; getline; sub(/^  \[/, "  [1/10^30 + "); print; next} {print}' "$cert" >"$tmp/tampered/c.gp"
+# (d) a wrong root: an interval far from d (no root of P there, or another one).
+sed -E 's/^d_low = .*$/d_low = 9\/10; d_high = 1;/' "$cert" >"$tmp/tampered/d.gp"
+for kind in a b c d; do
+  cmp -s "$cert" "$tmp/tampered/$kind.gp" && bad "tampering ($kind) changed nothing" && continue
+  expect_reject "t22a tampered ($kind)" "$tmp/tampered/$kind.gp"
+done
+echo "exact: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]

@@ -1,0 +1,110 @@
+// exact/algebraic.hpp: minimal polynomials of numbers whose polynomials are known in closed form,
+// the values computed here with MPFR (not with tripack's code).
+#include <gtest/gtest.h>
+#include <mpfr.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "exact/algebraic.hpp"
+
+namespace tripack::exact {
+namespace {
+
+// MPFR value -> fixed-notation decimal with `digits` significant digits.
+std::string decimal(mpfr_t x, int digits) {
+  char* text = nullptr;
+  mpfr_asprintf(&text, "%.*Re", digits - 1, x);
+  std::string s(text);
+  mpfr_free_str(text);
+  return s;
+}
+
+// (a + sqrt(3)) ^ -1 to `digits` digits: d of 4Delta(k) with a = 2k - 2 (docs/classes.md).
+std::string four_delta_d(long a, int digits) {
+  mpfr_t x;
+  mpfr_init2(x, static_cast<mpfr_prec_t>(digits * 3.33 + 64));
+  mpfr_sqrt_ui(x, 3, MPFR_RNDN);
+  mpfr_add_si(x, x, a, MPFR_RNDN);
+  mpfr_ui_div(x, 1, x, MPFR_RNDN);
+  const std::string s = decimal(x, digits);
+  mpfr_clear(x);
+  return s;
+}
+
+TEST(ExactAlgebraic, SquareRootOfTwoAndTheGoldenRatio) {
+  mpfr_t x;
+  mpfr_init2(x, 600);
+  mpfr_sqrt_ui(x, 2, MPFR_RNDN);
+  const MinimalPolynomial sqrt2 = minimal_polynomial(decimal(x, 160), 80, 12);
+  ASSERT_TRUE(sqrt2.found) << sqrt2.reason;
+  EXPECT_EQ(sqrt2.polynomial.pari(), "x^2 - 2");
+  mpfr_sqrt_ui(x, 5, MPFR_RNDN);
+  mpfr_add_ui(x, x, 1, MPFR_RNDN);
+  mpfr_div_ui(x, x, 2, MPFR_RNDN);
+  const MinimalPolynomial phi = minimal_polynomial(decimal(x, 160), 80, 12);
+  ASSERT_TRUE(phi.found);
+  EXPECT_EQ(phi.polynomial.pari(), "x^2 - x - 1");
+  mpfr_clear(x);
+}
+
+TEST(ExactAlgebraic, FourDeltaClosedFormForKUpTo50) {
+  // d(4Delta(k)) = 1/(2k - 2 + sqrt 3): (1 - a d)^2 = 3 d^2, so P = (a^2 - 3) x^2 - 2a x + 1 with
+  // a = 2k - 2, made primitive with a positive leading coefficient (k = 1: 3x^2 - 1).
+  for (long k = 1; k <= 50; ++k) {
+    const long a = 2 * k - 2;
+    const MinimalPolynomial p = minimal_polynomial(four_delta_d(a, 120), 60, 8);
+    ASSERT_TRUE(p.found) << "k = " << k << ": " << p.reason;
+    const long lead = a * a - 3, middle = -2 * a, constant = 1;
+    const long sign = lead < 0 ? -1 : 1;
+    const IntegerPolynomial expected{{std::to_string(sign * constant), std::to_string(sign * middle),
+                                      std::to_string(sign * lead)}};
+    EXPECT_EQ(p.polynomial.pari(), expected.pari()) << "k = " << k;
+  }
+}
+
+TEST(ExactAlgebraic, TheRootIntervalHoldsTheValue) {
+  const std::string d = four_delta_d(4, 120);  // k = 3
+  const MinimalPolynomial p = minimal_polynomial(d, 60, 8);
+  ASSERT_TRUE(p.found);
+  // low < d < high, compared in MPFR at 600 bits (the interval is ~1e-30 wide).
+  auto value_of = [](mpfr_t out, const std::string& q) {
+    const auto slash = q.find('/');
+    mpfr_t denominator;
+    mpfr_init2(denominator, 600);
+    mpfr_set_str(out, q.substr(0, slash).c_str(), 10, MPFR_RNDN);
+    mpfr_set_str(denominator, q.substr(slash + 1).c_str(), 10, MPFR_RNDN);
+    mpfr_div(out, out, denominator, MPFR_RNDN);
+    mpfr_clear(denominator);
+  };
+  mpfr_t low, high, value;
+  mpfr_inits2(600, low, high, value, static_cast<mpfr_ptr>(nullptr));
+  value_of(low, p.root.low);
+  value_of(high, p.root.high);
+  mpfr_set_str(value, d.c_str(), 10, MPFR_RNDN);
+  EXPECT_LT(mpfr_cmp(low, value), 0);
+  EXPECT_GT(mpfr_cmp(high, value), 0);
+  mpfr_sub(high, high, low, MPFR_RNDN);
+  EXPECT_LT(mpfr_get_d(high, MPFR_RNDN), 1e-25);  // about 2 * 10^-(digits / 2)
+  mpfr_clears(low, high, value, static_cast<mpfr_ptr>(nullptr));
+  EXPECT_EQ(p.digits, 60);
+  EXPECT_EQ(p.confirmed_digits, 120);
+}
+
+TEST(ExactAlgebraic, NoRelationForPiAtLowDegree) {
+  // pi is transcendental: no relation may be accepted, whatever LLL returns at 60 digits.
+  mpfr_t x;
+  mpfr_init2(x, 600);
+  mpfr_const_pi(x, MPFR_RNDN);
+  const MinimalPolynomial p = minimal_polynomial(decimal(x, 120), 60, 12);
+  mpfr_clear(x);
+  EXPECT_FALSE(p.found) << p.polynomial.pari();
+}
+
+TEST(ExactAlgebraic, BadInputIsRefused) {
+  EXPECT_THROW(minimal_polynomial("abc", 60, 4), std::invalid_argument);
+  EXPECT_THROW(minimal_polynomial("0.5", 10, 4), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tripack::exact
