@@ -362,15 +362,33 @@ int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
   return 0;
 }
 
-int cmd_exact(const ExactOptions& o) {
+int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
+  if (o.files.empty() == o.class_id.empty())
+    throw std::invalid_argument("exact needs packing files or --class C --k A..B, not both");
   const auto dir = o.certificates.empty() ? std::filesystem::path() : writable_directory(o.certificates);
   pipeline::ExactSettings settings;
   settings.digits = o.digits;
   settings.max_degree = o.max_degree;
   settings.existence = o.existence;
+  // Class members as built (polished, not certified: exact_of_packing analyses them itself).
+  std::vector<std::pair<std::string, Packing>> members;
+  if (!o.class_id.empty()) {
+    if (o.k_range.empty()) throw std::invalid_argument("exact --class needs --k A..B");
+    const auto [k_first, k_last] = parse_range(o.k_range, "--k");
+    const Catalogue catalogue = load_catalogue(g);
+    pipeline::BuildSettings build;
+    build.certify = false;
+    for (long k = k_first; k <= k_last; ++k) {
+      const auto built = pipeline::build_and_certify(catalogue, {o.class_id, k, o.p, ""}, build);
+      members.emplace_back(pipeline::member_name(built.pattern.provenance), built.record.pattern.packing);
+    }
+  }
   pipeline::ExactRun run;
-  for (const auto& file : o.files) {
-    run.packings.push_back(pipeline::exact_of_file(file, settings));
+  const std::size_t count = o.files.empty() ? members.size() : o.files.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    run.packings.push_back(o.files.empty()
+                               ? pipeline::exact_of_packing(members[i].second, members[i].first, {}, settings)
+                               : pipeline::exact_of_file(o.files[i], settings));
     const auto& r = run.packings.back();
     // Certificates first: what was proven is kept even if printing fails.
     if (!dir.empty() && r.configuration && r.configuration->proven) {

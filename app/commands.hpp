@@ -95,14 +95,17 @@ struct ExploreOptions {
 // `tripack draw FILE|CLASS`: a diagram of a points file (analysed) or a class member (built).
 // `tripack exact FILE...` (docs/exact.md).
 struct ExactOptions {
-  std::vector<std::string> files;
+  std::vector<std::string> files;  // or a class:
+  std::string class_id;
+  std::string k_range;  // "A..B" or "K"
+  long p = 0;
   int digits = 300;               // D: found from D digits, confirmed from 2D
   int max_degree = 48;
   std::string certificates;       // a directory: LABEL.gp for every proven packing
   bool existence = true;          // --no-existence: the polynomial only
   OutputOptions out;
 };
-int cmd_exact(const ExactOptions& o);
+int cmd_exact(const GlobalOptions& g, const ExactOptions& o);
 
 // `tripack exact-atlas` (docs/exact.md): every atlas row, resumable.
 struct ExactAtlasOptions {

@@ -273,12 +273,15 @@ Action add_db(CLI::App& cli, const GlobalOptions& g, DbCommandOptions& o) {
   };
 }
 
-Action add_exact(CLI::App& cli, ExactOptions& o) {
+Action add_exact(CLI::App& cli, const GlobalOptions& g, ExactOptions& o) {
   auto* c = cli.add_subcommand(
       "exact",
       "The minimal polynomial P of d (integer relation from D digits, confirmed from 2D, "
       "proven irreducible, root isolated) and a proof that the exact configuration exists");
-  c->add_option("FILE", o.files, "packing files (any layout of 'analyze')")->required();
+  c->add_option("FILE", o.files, "packing files (any layout of 'analyze')");
+  c->add_option("--class", o.class_id, "or the members of this class (see 'tripack classes')");
+  c->add_option("--k", o.k_range, "with --class: k = A..B (or K)");
+  c->add_option("--p", o.p, "with --class: matrix row p")->check(CLI::Range(0L, 1000000000L));
   c->add_option("--digits", o.digits, "D: digits the relation is found from (default 300)")
       ->check(CLI::Range(40, 500));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
@@ -287,7 +290,7 @@ Action add_exact(CLI::App& cli, ExactOptions& o) {
                 "write LABEL.gp (checked by checker/check_exact.sh) here for every proven packing");
   c->add_flag("!--no-existence", o.existence, "only the polynomial, no proof of statement (I)");
   add_output_flags(c, o.out);
-  return [c, &o] { return *c ? cmd_exact(o) : -1; };
+  return [c, &g, &o] { return *c ? cmd_exact(g, o) : -1; };
 }
 
 Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions& o) {
@@ -385,7 +388,7 @@ int main(int argc, char** argv) {
   ExactOptions exact;
   ExactAtlasOptions exact_atlas;
   const std::vector<Action> actions{
-      add_exact(cli, exact),
+      add_exact(cli, g, exact),
       add_exact_atlas(cli, g, exact_atlas),
       add_campaign(cli, g, campaign),
       add_atlas(cli, g, atlas),

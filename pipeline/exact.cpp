@@ -51,19 +51,31 @@ int decimals_of(const std::vector<std::array<std::string, 2>>& points) {
 }  // namespace
 
 ExactResult exact_of_file(const std::string& file, const ExactSettings& settings) {
+  AnalyzeRequest request;
+  request.file = file;
+  request.digits = 15;
+  const FileAnalysis analysed = analyze_file(request);  // reads; throws InputError
+  const FileText text = text_of(file);
+  ExactResult result = exact_of_packing(
+      analysed.analysis.pattern.packing,
+      text.label.empty() ? std::filesystem::path(file).stem().string() : text.label, text.points,
+      settings);
+  result.file = file;
+  return result;
+}
+
+ExactResult exact_of_packing(const Packing& packing, const std::string& label,
+                             const std::vector<std::array<std::string, 2>>& given,
+                             const ExactSettings& settings) {
   if (settings.digits < 40) throw std::invalid_argument("exact: --digits must be at least 40");
   if (2 * settings.digits > 1000)
     throw std::invalid_argument("exact: --digits must be at most 500 (the polish gives 2D <= 1000 digits)");
   ExactResult result;
-  result.file = file;
-  AnalyzeRequest request;
-  request.file = file;
-  const FileAnalysis analysed = analyze_file(request);
-  const Analysis& analysis = analysed.analysis;
+  const Analysis analysis = analyze_packing(packing, {});
   result.pattern = analysis.pattern;
   result.n = static_cast<int>(analysis.pattern.packing.size());
-  FileText text = text_of(file);
-  result.label = text.label.empty() ? std::filesystem::path(file).stem().string() : text.label;
+  FileText text{given, label};
+  result.label = label;
   if (!analysis.certified()) {
     result.reason = "the packing is not certified: " + analysis.status();
     return result;
@@ -92,6 +104,7 @@ ExactResult exact_of_file(const std::string& file, const ExactSettings& settings
   }
   // The given points: the file's own text when it is "x y" lines with enough digits for the
   // 10^-25 claim, else the polished points at 40 digits (the claim is then about those).
+  std::string given_note;
   exact::ConfigurationInput& input = result.input;
   input.n = result.n;
   input.bonds = analysis.pattern.bonds;
@@ -107,14 +120,14 @@ ExactResult exact_of_file(const std::string& file, const ExactSettings& settings
   } else {
     for (const auto& p : polish.points) input.given.push_back({p[0].substr(0, 42), p[1].substr(0, 42)});
     result.given_tolerance = "1e-25";
-    result.reason = "the file's coordinates have fewer than 27 decimals: the certificate's given points are the polish's";
+    given_note = "; the given points are the polish's (no coordinates with 27+ decimals given)";
   }
   const auto t2 = Clock::now();
   result.configuration = exact::prove_existence(input, result.polynomial);
   result.seconds_existence = seconds_since(t2);
   if (result.configuration->proven) {
     result.proof = "existence";
-    if (result.reason.empty()) result.reason = "statement (II) not attempted yet";
+    result.reason = "statement (II) not attempted yet" + given_note;
   } else {
     result.reason = result.configuration->reason;
   }

@@ -4,6 +4,7 @@
 // (exact/configuration.hpp). Prints nothing.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,5 +43,11 @@ struct ExactRun {
 
 // Throws InputError for a file that cannot be read, std::invalid_argument for bad settings.
 ExactResult exact_of_file(const std::string& file, const ExactSettings& settings);
+
+// A packing (e.g. a class member as built); `given`: its coordinates as text when they have 27+
+// decimals (else the certificate's given points are the polish's).
+ExactResult exact_of_packing(const Packing& packing, const std::string& label,
+                             const std::vector<std::array<std::string, 2>>& given,
+                             const ExactSettings& settings);
 
 }  // namespace tripack::pipeline

@@ -55,5 +55,19 @@ for kind in a b c d; do
   cmp -s "$cert" "$tmp/tampered/$kind.gp" && bad "tampering ($kind) changed nothing" && continue
   expect_reject "t22a tampered ($kind)" "$tmp/tampered/$kind.gp"
 done
+# The 4Delta(k) packings as built, k = 1..50 (n = 4 .. 5100): P equals the minimal polynomial of
+# the closed form d = 1/(a + sqrt 3), a = 2k - 2 (docs/classes.md): (a^2 - 3) x^2 - 2a x + 1,
+# made primitive with a positive leading coefficient (k = 1: 3x^2 - 1).
+"$TRIPACK" exact --class four-delta --k 1..50 --digits 60 --no-existence --csv >"$tmp/four-delta.csv" 2>&1 ||
+  bad "exact --class four-delta failed: $(tail -1 "$tmp/four-delta.csv")"
+for k in $(seq 1 50); do
+  a=$((2 * k - 2))
+  lead=$((a * a - 3))
+  if [ "$lead" -lt 0 ]; then expected="$((-lead))*x^2 - 1"; else expected="$lead*x^2 - $((2 * a))*x + 1"; fi
+  [ "$lead" -eq 1 ] && expected="x^2 - $((2 * a))*x + 1"
+  got=$(awk -F, -v k="four-delta k=$k" '$2 == k {print $4}' "$tmp/four-delta.csv")
+  [ "$got" = "$expected" ] && ok || bad "4Delta($k): P = '$got', the closed form gives '$expected'"
+done
+
 echo "exact: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
