@@ -48,20 +48,17 @@ row() {  # row LABEL BEFORE_VALUES_FILE AFTER_VALUES_FILE
   a=$(median <"$3")
   awk -v label="$1" -v b="$b" -v a="$a" 'BEGIN { printf "| %s | %.4g | %.4g | %.3f |\n", label, b, a, a / b }'
 }
-for n in "${billiards_cases[@]}"; do
+# csv_row LABEL FILE_STEM NAME_REGEX COLUMN: a table row from every round's CSV of both sides.
+csv_row() {
   for side in before after; do
-    for ((rep = 0; rep < REPS; rep++)); do
-      csv_column "$work/billiards.$side.$rep.csv" "BM_CompressToJamming/$n/" events_per_s
-    done >"$work/b.$side.$n"
+    for ((rep = 0; rep < REPS; rep++)); do csv_column "$work/$2.$side.$rep.csv" "$3" "$4"; done >"$work/v.$side"
   done
-  row "billiards events/s, n = $n" "$work/b.before.$n" "$work/b.after.$n"
+  row "$1" "$work/v.before" "$work/v.after"
+}
+for n in "${billiards_cases[@]}"; do
+  csv_row "billiards events/s, n = $n" billiards "BM_CompressToJamming/$n/" events_per_s
 done
-for side in before after; do
-  for ((rep = 0; rep < REPS; rep++)); do
-    csv_column "$work/analysis.$side.$rep.csv" "BM_CertifyBuilt/71/" real_time
-  done >"$work/a.$side"
-done
-row "certify n = 10,154: ms (lower is better)" "$work/a.before" "$work/a.after"
+csv_row "certify n = 10,154: ms (lower is better)" analysis "BM_CertifyBuilt/71/" real_time
 for case in "${campaign_cases[@]}"; do
   n=${case%%:*}
   row "campaign runs/s, n = $n, 2 threads" "$work/campaign.before.$n" "$work/campaign.after.$n"

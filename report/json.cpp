@@ -76,7 +76,7 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
   const long double L = 1.0L / pk.d;
   json j = member_json(b.pattern.provenance);
   j["n"] = n;
-  j["d"] = b.digits > 18 ? b.d_string(b.digits) : decimal17(pk.d);
+  j["d"] = b.digits > kLongDoubleDigits ? b.d_string(b.digits) : decimal17(pk.d);
   j["L"] = decimal17(L);
   j["delta"] = static_cast<double>(oler_delta(n, L));
   add_counts(j, b.pattern);

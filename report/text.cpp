@@ -115,7 +115,7 @@ void build_lines(std::ostream& out, const BuildResult& b) {
   line(out, "class", member_name(b.pattern.provenance));
   line(out, "n", std::to_string(n));
   line(out, "d", b.d_string(b.digits));
-  line(out, "L", format_significant(L, std::min(b.digits, 18)));
+  line(out, "L", format_significant(L, std::min(b.digits, kLongDoubleDigits)));
   line(out, "delta(n)", format_significant(oler_delta(n, L), 15));
   line(out, "bonds", count_vs(b.pattern.bonds.size(), b.bonds_expected));
   line(out, "rattlers", count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
