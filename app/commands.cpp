@@ -393,7 +393,7 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
     // Certificates first: what was proven is kept even if printing fails.
     if (!dir.empty() && r.configuration && r.configuration->proven) {
       std::ostringstream text;
-      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration, r.given_tolerance});
+      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
       report::write_file(dir / (r.label + ".gp"), text.str());
     }
   }

@@ -65,7 +65,16 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
         << "]";
   out << "];}\n";
   out << fmt::format("given_tolerance = {};\n", data.given_tolerance == "1e-25" ? "10^-25" : data.given_tolerance);
-  out << "claims = [\"existence\"];\n";
+  if (data.optimality && data.optimality->proven) {
+    out << "\\\\ a strictly positive self-stress, per bond (G^T stress = 0 in K; G of full rank)\n";
+    out << "{stress = [";
+    for (std::size_t i = 0; i < data.optimality->stress.size(); ++i)
+      out << (i ? ",\n  " : "\n  ") << data.optimality->stress[i].pari("t");
+    out << "];}\n";
+    out << "claims = [\"existence\", \"strict-local-optimum\"];\n";
+  } else {
+    out << "claims = [\"existence\"];\n";
+  }
 }
 
 }  // namespace tripack::exact

@@ -8,6 +8,7 @@
 
 #include "exact/algebraic.hpp"
 #include "exact/configuration.hpp"
+#include "exact/optimality.hpp"
 
 namespace tripack::exact {
 
@@ -16,10 +17,11 @@ struct CertificateData {
   const ConfigurationInput* input = nullptr;
   const MinimalPolynomial* polynomial = nullptr;
   const ExactConfiguration* configuration = nullptr;  // proven
+  const StrictOptimality* optimality = nullptr;        // when proven: claimed too
   std::string given_tolerance = "1e-25";
 };
 
-// Format 1; claims "existence".
+// Format 1; claims "existence", and "strict-local-optimum" with the stress when proven.
 void write_certificate(std::ostream& out, const CertificateData& data);
 
 }  // namespace tripack::exact

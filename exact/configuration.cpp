@@ -67,32 +67,6 @@ std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_
   return element;
 }
 
-// An element of K = Q[t]/(K) held as a reduced rational polynomial.
-struct Element {
-  FmpqPoly poly;
-};
-
-class Field {
- public:
-  explicit Field(const IntegerPolynomial& k) { flint::fmpq_poly_from_strings(modulus_.value, k.coefficients); }
-  void set(fmpq_poly_t out, const RationalPolynomial& a) const {
-    flint::fmpq_poly_from_strings(out, a.coefficients);
-    fmpq_poly_rem(out, out, modulus_.value);
-  }
-  void mul(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b) const {
-    fmpq_poly_mul(out, a, b);
-    fmpq_poly_rem(out, out, modulus_.value);
-  }
-  bool is_zero(const fmpq_poly_t a) const {
-    FmpqPoly r;
-    fmpq_poly_rem(r.value, a, modulus_.value);
-    return fmpq_poly_is_zero(r.value);
-  }
-
- private:
-  FmpqPoly modulus_;
-};
-
 void decimal_to_fmpq(fmpq_t out, std::string text, int keep_digits) {
   // "0.1234...", "-0.5", "1", or with an exponent; fixed notation is what the polish writes.
   if (text.find_first_of("eE") != std::string::npos)
@@ -204,7 +178,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     }
     out.embedding = *narrow;
   }
-  const Field field(out.field);
+  const flint::Field field(out.field);
   // Exact: P(d) = 0 and sqrt3^2 = 3 in K.
   {
     FmpqPoly dk, value, power, term, s3;

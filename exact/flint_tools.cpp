@@ -146,6 +146,39 @@ std::optional<IsolatedRoot> isolate_root(const fmpz_poly_t f, const arb_t x, int
                       take_string(fmpq_get_str(nullptr, 10, high.value))};
 }
 
+Field::Field(const IntegerPolynomial& k) { fmpq_poly_from_strings(modulus_.value, k.coefficients); }
+
+void Field::set(fmpq_poly_t out, const RationalPolynomial& a) const {
+  fmpq_poly_from_strings(out, a.coefficients);
+  fmpq_poly_rem(out, out, modulus_.value);
+}
+
+void Field::mul(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b) const {
+  fmpq_poly_mul(out, a, b);
+  fmpq_poly_rem(out, out, modulus_.value);
+}
+
+bool Field::inverse(fmpq_poly_t out, const fmpq_poly_t a) const {
+  if (is_zero(a)) return false;
+  FmpqPoly g, t;
+  fmpq_poly_xgcd(g.value, out, t.value, a, modulus_.value);  // out a + t K = g, g = 1 (monic)
+  if (!fmpq_poly_is_one(g.value)) return false;
+  fmpq_poly_rem(out, out, modulus_.value);
+  return true;
+}
+
+bool Field::is_zero(const fmpq_poly_t a) const {
+  FmpqPoly r;
+  fmpq_poly_rem(r.value, a, modulus_.value);
+  return fmpq_poly_is_zero(r.value);
+}
+
+void Field::evaluate(arb_t out, const fmpq_poly_t a, const arb_t t0, slong prec) {
+  ArbPoly ball;
+  arb_poly_set_fmpq_poly(ball.value, a, prec);
+  arb_poly_evaluate(out, ball.value, t0, prec);
+}
+
 void ball_of(arb_t x, const IsolatedRoot& root, slong prec) {
   Fmpq low, high;
   fmpq_set_str(low.value, root.low.c_str(), 10);

@@ -39,6 +39,23 @@ TRIPACK_FLINT_WRAPPER(Arb, arb_t, arb_init, arb_clear)
 TRIPACK_FLINT_WRAPPER(ArbPoly, arb_poly_t, arb_poly_init, arb_poly_clear)
 #undef TRIPACK_FLINT_WRAPPER
 
+// The number field K = Q[t]/(K(t)) (K irreducible): elements are rational polynomials reduced
+// modulo K(t); arithmetic is exact.
+class Field {
+ public:
+  explicit Field(const IntegerPolynomial& k);
+  void set(fmpq_poly_t out, const RationalPolynomial& a) const;  // a reduced
+  void mul(fmpq_poly_t out, const fmpq_poly_t a, const fmpq_poly_t b) const;
+  // out = 1 / a; false when a is 0.
+  bool inverse(fmpq_poly_t out, const fmpq_poly_t a) const;
+  bool is_zero(const fmpq_poly_t a) const;
+  // The value at the embedding: the ball of a evaluated on the ball t0.
+  static void evaluate(arb_t out, const fmpq_poly_t a, const arb_t t0, slong prec);
+
+ private:
+  FmpqPoly modulus_;
+};
+
 // Working precision in bits for `digits` decimal digits (with guard bits).
 slong bits_for(int digits);
 

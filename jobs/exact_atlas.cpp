@@ -133,7 +133,7 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     const pipeline::ExactResult& r = found[i];
     if (r.configuration && r.configuration->proven) {
       std::ofstream cert(settings.out / "exact" / (r.label + ".gp"));
-      exact::write_certificate(cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.given_tolerance});
+      exact::write_certificate(cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
       if (!cert) throw std::runtime_error("cannot write the certificate of " + r.label);
     }
     table << exact_csv_row(r) << "\n" << std::flush;

@@ -125,11 +125,19 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
   const auto t2 = Clock::now();
   result.configuration = exact::prove_existence(input, result.polynomial);
   result.seconds_existence = seconds_since(t2);
-  if (result.configuration->proven) {
-    result.proof = "existence";
-    result.reason = "statement (II) not attempted yet" + given_note;
-  } else {
+  if (!result.configuration->proven) {
     result.reason = result.configuration->reason;
+    return result;
+  }
+  result.proof = "existence";
+  const auto t3 = Clock::now();
+  result.optimality = exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
+  result.seconds_existence += seconds_since(t3);
+  if (result.optimality->proven) {
+    result.proof = "exact";
+    result.reason = given_note.empty() ? "" : given_note.substr(2);
+  } else {
+    result.reason = "statement (II): " + result.optimality->reason + given_note;
   }
   return result;
 }

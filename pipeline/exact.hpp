@@ -11,6 +11,7 @@
 
 #include "exact/algebraic.hpp"
 #include "exact/configuration.hpp"
+#include "exact/optimality.hpp"
 #include "pipeline/analyze.hpp"
 
 namespace tripack::pipeline {
@@ -18,7 +19,7 @@ namespace tripack::pipeline {
 struct ExactSettings {
   int digits = 300;       // D: the relation is found from D digits, confirmed from 2D
   int max_degree = 48;    // of P
-  bool existence = true;  // also prove statement (I)
+  bool existence = true;  // also prove statements (I) and (II)
 };
 
 struct ExactResult {
@@ -29,6 +30,7 @@ struct ExactResult {
   std::string d;      // to 2D digits
   exact::MinimalPolynomial polynomial;
   std::optional<exact::ExactConfiguration> configuration;
+  std::optional<exact::StrictOptimality> optimality;  // statement (II), when (I) holds
   exact::ConfigurationInput input;  // what statement (I) was proven for (the certificate's data)
   std::string given_tolerance;      // the claimed distance to the file's points ("1e-25")
   // "exact" (statements I and II), "existence" (I), "none"; reason: what stopped it.

@@ -39,6 +39,10 @@ void render_text(std::ostream& out, const pipeline::ExactRun& run, const RenderO
                          "given points within {:.1g}; smallest non-bond margin {:.3g} d\n",
                          r.configuration->field.degree(), r.configuration->largest_offset,
                          r.configuration->smallest_margin);
+    if (r.optimality && r.optimality->proven)
+      out << fmt::format("  statement (II): G has full rank {} over K; a strictly positive exact stress "
+                         "({} self-stresses; smallest/largest force {:.3g}): a strict local optimum\n",
+                         r.optimality->rank, r.optimality->stresses, r.optimality->smallest_stress_ratio);
     if (!r.reason.empty()) out << "  " << r.reason << "\n";
     out << fmt::format("  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f})\n", seconds_of(r),
                        r.seconds_polish, r.seconds_polynomial, r.seconds_existence);
@@ -69,6 +73,12 @@ void render_json(std::ostream& out, const pipeline::ExactRun& run, const RenderO
       j["field_degree"] = r.configuration->field.degree();
       j["largest_offset"] = r.configuration->largest_offset;
       j["smallest_margin"] = r.configuration->smallest_margin;
+    }
+    if (r.optimality) {
+      j["rank"] = r.optimality->rank;
+      j["columns"] = r.optimality->columns;
+      j["self_stresses"] = r.optimality->stresses;
+      j["strict_local_optimum"] = r.optimality->proven;
     }
     packings.push_back(j);
   }

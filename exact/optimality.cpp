@@ -1,0 +1,236 @@
+#include "exact/optimality.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "exact/flint_tools.hpp"
+
+namespace tripack::exact {
+
+namespace {
+
+using flint::Arb;
+using flint::FmpqPoly;
+
+// A matrix of elements of K.
+class Matrix {
+ public:
+  Matrix(int rows, int columns) : rows_(rows), columns_(columns) {
+    cells_.reserve(static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns));
+    for (int i = 0; i < rows * columns; ++i) cells_.push_back(std::make_unique<FmpqPoly>());
+  }
+  fmpq_poly_struct* at(int r, int c) { return cells_[index(r, c)]->value; }
+  int rows() const { return rows_; }
+  int columns() const { return columns_; }
+  void swap_rows(int a, int b) {
+    for (int c = 0; c < columns_; ++c) std::swap(cells_[index(a, c)], cells_[index(b, c)]);
+  }
+
+ private:
+  std::size_t index(int r, int c) const {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(c);
+  }
+  int rows_, columns_;
+  std::vector<std::unique_ptr<FmpqPoly>> cells_;
+};
+
+// Reduced row echelon form over K in place; the pivot column of each pivot row.
+std::vector<int> row_reduce(Matrix& m, const flint::Field& field) {
+  std::vector<int> pivots;
+  FmpqPoly inverse, factor, product;
+  int row = 0;
+  for (int c = 0; c < m.columns() && row < m.rows(); ++c) {
+    int pivot = -1;
+    for (int r = row; r < m.rows() && pivot < 0; ++r)
+      if (!field.is_zero(m.at(r, c))) pivot = r;
+    if (pivot < 0) continue;
+    m.swap_rows(row, pivot);
+    field.inverse(inverse.value, m.at(row, c));
+    for (int j = c; j < m.columns(); ++j) field.mul(m.at(row, j), m.at(row, j), inverse.value);
+    for (int r = 0; r < m.rows(); ++r) {
+      if (r == row || fmpq_poly_is_zero(m.at(r, c))) continue;
+      fmpq_poly_set(factor.value, m.at(r, c));
+      for (int j = c; j < m.columns(); ++j) {
+        if (fmpq_poly_is_zero(m.at(row, j))) continue;
+        field.mul(product.value, factor.value, m.at(row, j));
+        fmpq_poly_sub(m.at(r, j), m.at(r, j), product.value);
+      }
+    }
+    pivots.push_back(c);
+    ++row;
+  }
+  return pivots;
+}
+
+}  // namespace
+
+StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const ExactConfiguration& config,
+                                         const std::vector<long double>& forces) {
+  StrictOptimality out;
+  if (!config.proven) {
+    out.reason = "statement (I) is not proven";
+    return out;
+  }
+  const flint::Field field(config.field);
+  const int digits = in.digits;
+  const slong prec = flint::bits_for(2 * digits);
+  // Held disks and their columns.
+  const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
+  std::map<int, int> column_of;
+  for (int i = 0; i < in.n; ++i)
+    if (!rattlers.count(i)) column_of[i] = 2 * static_cast<int>(column_of.size());
+  const int columns = 2 * static_cast<int>(column_of.size());
+  const int bonds = static_cast<int>(in.bonds.size());
+  out.columns = columns;
+  // G^T: one row per column of G, one column per bond.
+  Matrix gt(columns, bonds);
+  FmpqPoly xa, ya, xb, yb, s3;
+  field.set(s3.value, config.sqrt3_in_field);
+  for (int b = 0; b < bonds; ++b) {
+    const Bond& bond = in.bonds[static_cast<std::size_t>(b)];
+    const int ca = column_of.at(bond.a);
+    field.set(xa.value, config.points[static_cast<std::size_t>(bond.a)][0]);
+    field.set(ya.value, config.points[static_cast<std::size_t>(bond.a)][1]);
+    if (bond.is_wall()) {
+      switch (bond.side()) {
+        case Side::Bottom:
+          fmpq_poly_one(gt.at(ca + 1, b));
+          break;
+        case Side::Left:
+          fmpq_poly_set(gt.at(ca, b), s3.value);
+          fmpq_poly_set_si(gt.at(ca + 1, b), -1);
+          break;
+        case Side::Right:
+          fmpq_poly_neg(gt.at(ca, b), s3.value);
+          fmpq_poly_set_si(gt.at(ca + 1, b), -1);
+          break;
+      }
+      continue;
+    }
+    const int cb = column_of.at(bond.b);
+    field.set(xb.value, config.points[static_cast<std::size_t>(bond.b)][0]);
+    field.set(yb.value, config.points[static_cast<std::size_t>(bond.b)][1]);
+    fmpq_poly_sub(gt.at(ca, b), xa.value, xb.value);
+    fmpq_poly_sub(gt.at(ca + 1, b), ya.value, yb.value);
+    fmpq_poly_neg(gt.at(cb, b), gt.at(ca, b));
+    fmpq_poly_neg(gt.at(cb + 1, b), gt.at(ca + 1, b));
+  }
+  Matrix reduced(columns, bonds);
+  for (int r = 0; r < columns; ++r)
+    for (int c = 0; c < bonds; ++c) fmpq_poly_set(reduced.at(r, c), gt.at(r, c));
+  const std::vector<int> pivots = row_reduce(reduced, field);
+  out.rank = static_cast<int>(pivots.size());
+  out.stresses = bonds - out.rank;
+  if (out.rank < columns) {
+    out.reason = fmt::format("G has rank {} < {} over K: the held disks have a first-order motion",
+                             out.rank, columns);
+    return out;
+  }
+  if (out.stresses == 0) {
+    out.reason = "no self-stress (G^T is injective)";
+    return out;
+  }
+  // The self-stresses: one basis vector per free column.
+  std::vector<int> free;
+  {
+    std::set<int> pivot_set(pivots.begin(), pivots.end());
+    for (int c = 0; c < bonds; ++c)
+      if (!pivot_set.count(c)) free.push_back(c);
+  }
+  std::vector<std::vector<std::unique_ptr<FmpqPoly>>> basis;
+  for (int f : free) {
+    std::vector<std::unique_ptr<FmpqPoly>> v;
+    for (int c = 0; c < bonds; ++c) v.push_back(std::make_unique<FmpqPoly>());
+    fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
+    for (std::size_t r = 0; r < pivots.size(); ++r)
+      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value, reduced.at(static_cast<int>(r), f));
+    basis.push_back(std::move(v));
+  }
+  // At t0.
+  Arb t0, value;
+  flint::ball_of(t0.value, config.embedding, prec);
+  Eigen::MatrixXd at(bonds, static_cast<Eigen::Index>(basis.size()));
+  for (std::size_t k = 0; k < basis.size(); ++k)
+    for (int c = 0; c < bonds; ++c) {
+      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0.value, prec);
+      at(c, static_cast<Eigen::Index>(k)) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
+    }
+  // The combination: one basis vector (sign made positive), or the least-squares fit of the
+  // numerical stress, rescaled to our rows (pair rows carry d, the side walls 2), rounded to
+  // rationals: the stress is then exact whatever the coefficients are.
+  Eigen::VectorXd coefficients(static_cast<Eigen::Index>(basis.size()));
+  if (basis.size() == 1) {
+    coefficients(0) = at.col(0).sum() < 0 ? -1.0 : 1.0;
+  } else {
+    if (forces.size() != static_cast<std::size_t>(bonds)) {
+      out.reason = fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
+      return out;
+    }
+    Arb dv;
+    FmpqPoly dk;
+    field.set(dk.value, config.d_in_field);
+    flint::Field::evaluate(dv.value, dk.value, t0.value, prec);
+    const double d = arf_get_d(arb_midref(dv.value), ARF_RND_NEAR);
+    Eigen::VectorXd target(bonds);
+    for (int b = 0; b < bonds; ++b) {
+      const Bond& bond = in.bonds[static_cast<std::size_t>(b)];
+      const double f = static_cast<double>(forces[static_cast<std::size_t>(b)]);
+      target(b) = !bond.is_wall() ? f / d : (bond.side() == Side::Bottom ? f : f / 2);
+    }
+    coefficients = at.colPivHouseholderQr().solve(target);
+  }
+  FmpqPoly term;
+  flint::Fmpz numerator, denominator;
+  fmpz_one(denominator.value);
+  fmpz_mul_2exp(denominator.value, denominator.value, 52);
+  flint::Fmpq c;
+  std::vector<std::unique_ptr<FmpqPoly>> stress;
+  for (int b = 0; b < bonds; ++b) stress.push_back(std::make_unique<FmpqPoly>());
+  const double scale = coefficients.cwiseAbs().maxCoeff();
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    fmpz_set_d(numerator.value, std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
+    fmpq_set_fmpz_frac(c.value, numerator.value, denominator.value);
+    for (int b = 0; b < bonds; ++b) {
+      fmpq_poly_scalar_mul_fmpq(term.value, basis[k][static_cast<std::size_t>(b)]->value, c.value);
+      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value, stress[static_cast<std::size_t>(b)]->value,
+                    term.value);
+    }
+  }
+  // Exactly balanced (by construction; checked), strictly positive at t0 (Arb).
+  FmpqPoly sum, product;
+  for (int r = 0; r < columns; ++r) {
+    fmpq_poly_zero(sum.value);
+    for (int b = 0; b < bonds; ++b) {
+      field.mul(product.value, gt.at(r, b), stress[static_cast<std::size_t>(b)]->value);
+      fmpq_poly_add(sum.value, sum.value, product.value);
+    }
+    if (!field.is_zero(sum.value)) {
+      out.reason = "the stress does not balance exactly";
+      return out;
+    }
+  }
+  double smallest = INFINITY, largest = 0;
+  for (int b = 0; b < bonds; ++b) {
+    flint::Field::evaluate(value.value, stress[static_cast<std::size_t>(b)]->value, t0.value, prec);
+    if (!arb_is_positive(value.value)) {
+      out.reason = fmt::format("the exact stress is not strictly positive on bond {} ({} self-stresses)", b + 1,
+                               basis.size());
+      return out;
+    }
+    const double v = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
+    smallest = std::min(smallest, v);
+    largest = std::max(largest, v);
+  }
+  for (const auto& s : stress) out.stress.push_back(flint::strings_from_fmpq_poly(s->value));
+  out.smallest_stress_ratio = smallest / largest;
+  out.proven = true;
+  return out;
+}
+
+}  // namespace tripack::exact
