@@ -309,7 +309,8 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
     atlas = report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
                                  std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
-                                                                   : std::vector<jobs::AtlasGap>{}};
+                                                                   : std::vector<jobs::AtlasGap>{},
+                                 jobs::read_exact_atlas(atlas_csv.parent_path() / "atlas-exact.csv")};
   }
   const CancelToken never;
   report::ProgressLine progress(std::cerr, job_line("explore", 0, true));

@@ -52,7 +52,16 @@ std::vector<std::string> fields_of(const PackingRecord& r) {
           r.file};
 }
 
-// RFC 4180 fields of one line (no line breaks inside fields: the atlas writes none).
+// Writes `bytes` to `path` whole; throws a one-line error naming it.
+void write_whole(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
 std::vector<std::string> split_csv(const std::string& line) {
   std::vector<std::string> fields(1);
   bool quoted = false;
@@ -78,15 +87,6 @@ std::vector<std::string> split_csv(const std::string& line) {
   return fields;
 }
 
-// Writes `bytes` to `path` whole; throws a one-line error naming it.
-void write_whole(const std::filesystem::path& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << bytes;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
-}  // namespace
 
 void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   const auto files = dir / "atlas";

@@ -35,4 +35,7 @@ std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv);
 // certificate from the file alone), with the table's label, rank, d and L. Same errors.
 std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long long max_rank);
 
+// RFC 4180 fields of one CSV line (no line breaks inside fields: the tables here write none).
+std::vector<std::string> split_csv(const std::string& line);
+
 }  // namespace tripack::jobs

@@ -80,6 +80,34 @@ std::string exact_csv_row(const pipeline::ExactResult& r) {
                      r.seconds_polish + r.seconds_polynomial + r.seconds_existence);
 }
 
+std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
+  std::map<std::string, ExactAtlasRow> rows;
+  std::ifstream in(csv);
+  if (!in) return rows;
+  std::string line;
+  std::getline(in, line);
+  for (int number = 2; std::getline(in, line); ++number) {
+    const auto f = split_csv(line);
+    if (f.size() != 9)
+      throw std::runtime_error(fmt::format("{}:{}: {} columns, 9 expected", csv.string(), number, f.size()));
+    ExactAtlasRow r;
+    try {
+      r.n = std::stoll(f[0]);
+    } catch (const std::exception&) {
+      throw std::runtime_error(fmt::format("{}:{}: n is not a number", csv.string(), number));
+    }
+    r.label = f[1];
+    r.degree = f[2];
+    r.polynomial = f[3];
+    r.root_low = f[4];
+    r.root_high = f[5];
+    r.proof = f[6];
+    r.reason = f[7];
+    rows[r.label] = r;
+  }
+  return rows;
+}
+
 ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const CancelToken* cancel,
                                    const ProgressFn& progress) {
   const auto start = Clock::now();

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,15 @@ struct ExactAtlasResult {
 // (rationals), proof (exact, existence, none), reason, seconds.
 std::string exact_csv_header();
 std::string exact_csv_row(const pipeline::ExactResult& r);
+
+// A row of atlas-exact.csv as read back (strings as written).
+struct ExactAtlasRow {
+  long long n = 0;
+  std::string label, degree, polynomial, root_low, root_high, proof, reason;
+};
+// Rows by label; an absent file gives none. Throws std::runtime_error naming the file and line
+// for a row without the 9 columns.
+std::map<std::string, ExactAtlasRow> read_exact_atlas(const std::filesystem::path& csv);
 
 // Throws for an unreadable atlas or an unwritable DIR (before any row runs). A row whose file
 // cannot be analysed gets proof "none" with the error as its reason.

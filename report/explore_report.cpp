@@ -249,16 +249,36 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
         html_escape(e.label), e.d.str().substr(0, 17), static_cast<double>(d_atlas / d_builder - 1),
         e.bonds(), e.rattlers(), html_escape(e.source_text()));
   }
-  h << "</table>\n<h3>Best of every n</h3>\n<table><tr><th>n</th><th>label</th><th>d (30 digits)"
-       "</th><th>&delta;</th><th>bonds</th><th>rattlers</th><th>source</th><th>files</th></tr>\n";
+  h << "</table>\n<h3>Best of every n</h3>\n";
+  if (!atlas.exact.empty())
+    h << "<p>Exact d(n) (docs/exact.md, <a href=\"atlas/atlas-exact.csv\">atlas-exact.csv</a>): the "
+         "degree of d's minimal polynomial P and the proof: <em>exact</em> (the exact configuration "
+         "exists and is a strict local optimum), <em>existence</em> (it exists), <em>none</em>; each "
+         "proof links to its certificate, which checker/check_exact.sh re-checks with PARI/GP.</p>\n";
+  h << "<table><tr><th>n</th><th>label</th><th>d (30 digits)</th><th>&delta;</th><th>bonds</th>"
+       "<th>rattlers</th><th>source</th>"
+    << (atlas.exact.empty() ? "" : "<th>deg P</th><th>proof</th>") << "<th>files</th></tr>\n";
   for (const auto& e : atlas.best) {
+    std::string exact_cells;
+    if (!atlas.exact.empty()) {
+      const auto it = atlas.exact.find(e.label);
+      if (it == atlas.exact.end())
+        exact_cells = "<td></td><td>not run</td>";
+      else if (it->second.proof == "none")
+        exact_cells = fmt::format("<td>{}</td><td title=\"{}\">none</td>", it->second.degree,
+                                  html_escape(it->second.reason));
+      else
+        exact_cells = fmt::format("<td title=\"{}\">{}</td><td><a href=\"atlas/exact/{}.gp\">{}</a></td>",
+                                  html_escape(it->second.polynomial), it->second.degree,
+                                  html_escape(e.label), it->second.proof);
+    }
     h << fmt::format(
         "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
-        "<td>{5}</td><td style=\"text-align:left\">{6}</td><td><a href=\"atlas/{7}\">coordinates"
+        "<td>{5}</td><td style=\"text-align:left\">{6}</td>{9}<td><a href=\"atlas/{7}\">coordinates"
         "</a>{8}</td></tr>\n",
         html_escape(e.label), e.n(), e.d.str(), jobs::atlas_delta(e).substr(0, 12), e.bonds(),
         e.rattlers(), html_escape(e.source_text()), html_escape(e.file),
-        diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "");
+        diagrams ? fmt::format(" <a href=\"{}\">diagram</a>", atlas_diagram(e)) : "", exact_cells);
   }
   h << "</table>\n";
   if (!atlas.gaps.empty()) {
@@ -444,6 +464,17 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
                     fs::copy_options::overwrite_existing);
     for (const auto& e : options.atlas->rows)
       fs::copy_file(from / e.file, dir / "atlas" / e.file, fs::copy_options::overwrite_existing);
+    if (!options.atlas->exact.empty()) {
+      fs::copy_file(from / "atlas-exact.csv", dir / "atlas" / "atlas-exact.csv",
+                    fs::copy_options::overwrite_existing);
+      fs::create_directories(dir / "atlas" / "exact");
+      for (const auto& e : options.atlas->best) {
+        const fs::path certificate = from / "exact" / (e.label + ".gp");
+        if (fs::exists(certificate))
+          fs::copy_file(certificate, dir / "atlas" / "exact" / certificate.filename(),
+                        fs::copy_options::overwrite_existing);
+      }
+    }
     if (options.diagrams)
       for (const auto& p : options.atlas->best) {
         Diagram diagram{p.pattern, p.label, p.d.str().substr(0, 17), p.forces};

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "jobs/atlas_files.hpp"
+#include "jobs/exact_atlas.hpp"
 #include "jobs/explore.hpp"
 
 namespace tripack::report {
@@ -22,6 +24,9 @@ struct ExploreAtlas {
   std::vector<PackingRecord> rows;        // every row as read (no bonds: files keep none)
   std::vector<PackingRecord> best;        // the rank-1 rows, read back and analysed
   std::vector<jobs::AtlasGap> gaps;   // atlas-gaps.csv beside it (empty if absent)
+  // atlas-exact.csv beside it, by label (empty if absent): P's degree, the proof, certificates in
+  // exact/ (docs/exact.md).
+  std::map<std::string, jobs::ExactAtlasRow> exact;
 };
 
 struct ExploreReportOptions {
