@@ -3,14 +3,19 @@
 \\ Written in PARI/GP only; shares no code with tripack (which writes certificates with
 \\ FLINT/Arb). It re-checks statement (I), "existence": the stated points form a packing of n
 \\ points in the unit triangle (0,0), (1,0), (1/2, sqrt(3)/2) whose minimum distance is d, every
-\\ stated bond holding exactly. See checker/README.md for what is and is not proved.
+\\ stated bond holding exactly. When the certificate also claims "strict-local-optimum"
+\\ (statement II) and gives a stress (one entry per bond, an element of K), it checks that the
+\\ stress balances exactly in K (G^T stress = 0), is positive at t0 (numerically), and that the
+\\ bond-opening matrix G of the held disks has full column rank over K (exact, matrank over
+\\ Q[t]/(K)). See checker/README.md for what is and is not proved.
 \\
 \\ Usage (normally through checker/check_exact.sh):
 \\   CERT_FILE=cert.gp gp -q -f checker/check_exact.gp < /dev/null
 \\ or   echo 'cert_file = "cert.gp"; read("checker/check_exact.gp")' | gp -q -f
 \\ Exit status: 0 = ACCEPTED, 1 = REJECTED (including an unreadable file or a missing
 \\ variable). Output: one "PASS name: detail" / "FAIL name: detail" line per check, "NOTE" and
-\\ "SKIP" lines, and a final "certificate LABEL: ACCEPTED (existence)" or
+\\ "SKIP" lines, and a final "certificate LABEL: ACCEPTED (existence)",
+\\ "certificate LABEL: ACCEPTED (existence, strict-local-optimum)" or
 \\ "certificate LABEL: REJECTED (k failures)".
 \\
 \\ Order matters in this file: the certificate is scanned and read FIRST, and every function
@@ -89,6 +94,7 @@ ck_names = ["cert_format", "label", "n", "P", "d_low", "d_high", "K", "t_low", "
   "d_in_K", "sqrt3_in_K", "points", "rattlers", "bonds", "given", "given_tolerance", "claims"];
 ck_nfail = 0;
 ck_label = ck_file;
+ck_claim_slo = 0;                   \\ "strict-local-optimum" is claimed
 
 ck_report(ok, name, detail) =
 {
@@ -116,7 +122,7 @@ ck_printable(s) = #select(c -> c < 32 || c == 127, Vec(Vecsmall(s))) == 0;
 ck_finish() =
 {
   if(ck_nfail == 0,
-    print("certificate ", ck_label, ": ACCEPTED (existence)"); quit(0),
+    print("certificate ", ck_label, ": ACCEPTED (existence", if(ck_claim_slo, ", strict-local-optimum", ""), ")"); quit(0),
     print("certificate ", ck_label, ": REJECTED (", ck_nfail, " failures)"); quit(1));
 }
 
@@ -212,8 +218,14 @@ ck_check_coordinates() =
 ck_check_claims() =
 {
   my(has = 0);
-  foreach(claims, c, if(c == "existence", has = 1, ck_note(Str("claim \"", c, "\": not checked (unknown to this checker)"))));
-  ck_report(has, "claims", if(has, "\"existence\" (statement I) claimed and checked below", "the certificate does not claim \"existence\""));
+  foreach(claims, c,
+    if(c == "existence", has = 1,
+       c == "strict-local-optimum", ck_claim_slo = 1,
+       ck_note(Str("claim \"", c, "\": not checked (unknown to this checker)"))));
+  if(!ck_claim_slo && ck_stress_assigned(),
+    ck_note("stress is assigned but \"strict-local-optimum\" is not claimed: the stress is not checked"));
+  ck_report(has, "claims", Str(if(has, "\"existence\" (statement I) claimed and checked below", "the certificate does not claim \"existence\""),
+    if(ck_claim_slo, "; \"strict-local-optimum\" (statement II) claimed and checked after it", "")));
 }
 
 \\ --- item 1: P ----------------------------------------------------------------------------------
@@ -349,6 +361,108 @@ ck_check_numeric() =
     "; smallest margin found ", if(min(pm, wm) == oo, "none (no inequality to check)", ck_fmt(min(pm, wm)))));
 }
 
+\\ --- statement (II), "strict-local-optimum": stress and rigidity --------------------------------
+\\ H = the held disks (not rattlers), h = #H. G (B x 2h over K) has one row per bond: pair
+\\ [i, j]: (x_i - x_j, y_i - y_j) in i's columns, the negative in j's; wall [i, -w]: the inward
+\\ normal in i's columns, (0, 1), (sqrt3, -1), (-sqrt3, -1) for w = 1, 2, 3. (Pair rows are
+\\ d * u_ij, wall rows n_w or 2 * n_w: positive row scalings change neither "G^T f = 0 for some
+\\ f > 0" nor the rank.) A stress f > 0 with G^T f = 0 and G injective make the held disks a
+\\ strict local maximum of d (checker/README.md, "Statement (II)").
+
+\\ an unassigned name evaluates to the polynomial variable of the same name
+ck_stress_assigned() = !(type(stress) == "t_POL" && stress == 'stress);
+
+ck_held() = my(R = Set(rattlers)); [i | i <- [1 .. n], !setsearch(R, i)];
+
+\\ the bond-opening matrix over K (entries t_POLMOD mod K); col[i] = position of point i in H
+ck_opening_matrix(H) =
+{
+  my(col = vector(n), G, s3 = Mod(sqrt3_in_K, K), z = Mod(0, K), one = Mod(1, K));
+  for(k = 1, #H, col[H[k]] = k);
+  G = matrix(#bonds, 2 * #H, r, c, z);
+  for(b = 1, #bonds,
+    my(i = bonds[b][1], j = bonds[b][2], ci = 2 * col[i] - 1, cj, dx, dy);
+    if(j > 0,
+      cj = 2 * col[j] - 1;
+      dx = Mod(points[i][1] - points[j][1], K); dy = Mod(points[i][2] - points[j][2], K);
+      G[b, ci] = dx; G[b, ci + 1] = dy; G[b, cj] = -dx; G[b, cj + 1] = -dy,
+    j == -1, G[b, ci + 1] = one,
+    j == -2, G[b, ci] = s3; G[b, ci + 1] = -one,
+    G[b, ci] = -s3; G[b, ci + 1] = -one));
+  G;
+}
+
+ck_check_stress_format() =
+{
+  my(bad);
+  if(!ck_stress_assigned(),
+    return(ck_report(0, "stress-format", "the certificate claims \"strict-local-optimum\" but does not assign stress")));
+  if(type(stress) != "t_VEC" || #stress != #bonds,
+    return(ck_report(0, "stress-format", Str("stress is not a vector with one entry per bond (",
+      if(type(stress) == "t_VEC", Str(#stress, " entries"), type(stress)), ", ", #bonds, " bonds)"))));
+  bad = [b | b <- [1 .. #stress], !ck_isKelt(stress[b])];
+  ck_report(#bad == 0, "stress-format",
+    if(#bad, Str(#bad, " stress entries are not polynomials in t with rational coefficients (or rationals), first for bond ", bonds[bad[1]]),
+      Str(#stress, " entries, one per bond, in K")));
+}
+
+\\ 1. G^T stress = 0 exactly in K: for every held disk, both coordinates
+ck_check_balance(H, G) =
+{
+  my(f = Col(vector(#stress, b, Mod(stress[b], K))), r = G~ * f, bad = [k | k <- [1 .. #r], r[k] != 0]);
+  ck_report(#bad == 0, "stress-balance",
+    if(#bad, Str(#bad, " of ", #r, " equations of G^T stress = 0 fail in Q[t]/(K), first at point ", H[(bad[1] + 1) \ 2],
+        if(bad[1] % 2, " (x)", " (y)"), ": ", ck_short(lift(r[bad[1]])), " mod K"),
+      Str("G^T stress = 0 exactly in Q[t]/(K): ", #r, " equations (x and y of ", #H, " held disks), ", #stress, " bonds")));
+}
+
+\\ 2. every stress entry is positive at t0, with a margin relative to the largest |s_b|
+ck_check_positive() =
+{
+  my(v, m, rmin = oo, w = 0, bad = List());
+  default(realprecision, ck_digits);
+  v = vector(#stress, b, if(ck_israt(stress[b]), stress[b], subst(stress[b], 't, ck_t0)) * 1.);
+  m = vecmax(apply(abs, v));
+  if(m <= 10^(-ck_digits), return(ck_report(0, "stress-positive", "every stress entry is 0 at t0")));
+  for(b = 1, #v, my(q = v[b] / m); if(q < rmin, rmin = q; w = b); if(q <= ck_eps, listput(bad, b)));
+  ck_report(#bad == 0, "stress-positive",
+    Str(#v, " entries, smallest s_b / max|s| at t0 = ", ck_fmt(rmin), " at bond ", bonds[w],
+      if(#bad, Str("; ", #bad, " entries NOT positive by more than 1e-", ck_digits / 2, " relative, first at bond ", bonds[bad[1]]),
+        Str(" (> 1e-", ck_digits / 2, "; floating point at ", ck_digits, " digits)"))));
+}
+
+\\ 3. G has full column rank 2h over K (exact: matrank of the t_POLMOD matrix, i.e. Gaussian
+\\ elimination in the field Q[t]/(K), K irreducible by K-irreducible); h >= 1, every held disk bonded
+ck_check_rigidity(H, G) =
+{
+  my(deg = vector(n), lone, rk);
+  foreach(bonds, b, deg[b[1]]++; if(b[2] > 0, deg[b[2]]++));
+  lone = [i | i <- H, deg[i] == 0];
+  if(#H < 1, return(ck_report(0, "rigidity", "no held disk (h = 0)")));
+  if(#lone, return(ck_report(0, "rigidity", Str(#lone, " held disks without any bond (G has a zero column), first ", lone[1]))));
+  rk = matrank(G);
+  ck_report(rk == 2 * #H, "rigidity",
+    Str("rank of G over Q[t]/(K) = ", rk, if(rk == 2 * #H, " = ", " < "), "2h = ", 2 * #H,
+      " (", #bonds, " bonds x ", 2 * #H, " coordinates, exact", if(rk == 2 * #H, "; G is injective)", "; G is NOT injective: some motion of the held disks changes no bond at first order, so the stress proves nothing)")));
+}
+
+ck_check_optimality() =
+{
+  my(f0 = ck_nfail, ok, H, G);
+  if(!ck_claim_slo, return(0));
+  ok = ck_check_stress_format();
+  if(f0 > 0,
+    foreach(["stress-balance", "stress-positive", "rigidity"], s, ck_skip(s, "statement (I), existence, failed")); return(0));
+  if(!ok,
+    foreach(["stress-balance", "stress-positive", "rigidity"], s, ck_skip(s, "no valid stress")); return(0));
+  H = ck_held();
+  G = iferr(ck_opening_matrix(H), E, ck_report(0, "stress-balance", Str("error building G: ", E)); return(0));
+  \\ a GP error inside a check is that check's failure
+  iferr(ck_check_balance(H, G), E, ck_report(0, "stress-balance", Str("error: ", E)));
+  iferr(ck_check_positive(), E, ck_report(0, "stress-positive", Str("error: ", E)));
+  iferr(ck_check_rigidity(H, G), E, ck_report(0, "rigidity", Str("error: ", E)));
+}
+
 ck_main() =
 {
   ck_check_variables();
@@ -360,6 +474,7 @@ ck_main() =
   ck_check_embedding();
   ck_check_bonds();
   ck_check_numeric();
+  ck_check_optimality();
   ck_finish();
 }
 
