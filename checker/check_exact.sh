@@ -5,7 +5,7 @@
 # then "N certificates: A accepted, R rejected". Exits 0 when every certificate is accepted,
 # 1 when any is rejected, 2 on a usage error. Set GP=/path/to/gp to use another gp binary.
 # A certificate counts as accepted only when gp exits 0 AND its last line is the checker's
-# "certificate LABEL: ACCEPTED (existence)"; anything else (a gp crash, a missing verdict) is a
+# "certificate LABEL: ACCEPTED (existence)" or "... ACCEPTED (existence, strict-local-optimum)"; anything else (a gp crash, a missing verdict) is a
 # rejection.
 set -u
 
@@ -40,7 +40,7 @@ for cert in "$@"; do
     --default debugmem=0 "$checker" </dev/null 2>&1 | tee "$tmp"
   rc=${PIPESTATUS[0]}
   last=$(tail -n 1 "$tmp")
-  if [ "$rc" -eq 0 ] && [[ "$last" =~ ^certificate\ .*:\ ACCEPTED\ \(existence\)$ ]]; then
+  if [ "$rc" -eq 0 ] && [[ "$last" =~ ^certificate\ .*:\ ACCEPTED\ \((existence|existence,\ strict-local-optimum)\)$ ]]; then
     accepted=$((accepted + 1))
   else
     rejected=$((rejected + 1))
