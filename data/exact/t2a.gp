@@ -21,4 +21,11 @@ bonds = [[1, -3], [1, -2], [1, 2], [2, -3], [2, -1]];
   [500000000000000000000000000000/10^30, 866025403784438646763723170753/10^30],
   [1000000000000000000000000000000/10^30, 0/10^30]];}
 given_tolerance = 10^-25;
-claims = ["existence"];
+\\ a strictly positive self-stress, per bond (G^T stress = 0 in K; G of full rank)
+{stress = [
+  1/4,
+  1/2,
+  1/2*t - 1/2,
+  1/4,
+  1];}
+claims = ["existence", "strict-local-optimum"];

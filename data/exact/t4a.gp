@@ -25,4 +25,15 @@ bonds = [[1, -2], [1, -1], [1, 4], [2, -3], [2, -2], [2, 4], [3, -3], [3, -1], [
   [1000000000000000000000000000000/10^30, 0/10^30],
   [500000000000000000000000000000/10^30, 288675134594812882254574390251/10^30]];}
 given_tolerance = 10^-25;
-claims = ["existence"];
+\\ a strictly positive self-stress, per bond (G^T stress = 0 in K; G of full rank)
+{stress = [
+  1/2*t,
+  t,
+  1,
+  1/2*t,
+  1/2*t,
+  1,
+  1/2*t,
+  t,
+  1];}
+claims = ["existence", "strict-local-optimum"];
