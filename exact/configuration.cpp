@@ -9,6 +9,8 @@
 #include <set>
 #include <stdexcept>
 
+#include <flint/fmpq_mat.h>
+
 #include "exact/flint_tools.hpp"
 
 namespace tripack::exact {
@@ -45,7 +47,10 @@ std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_
     const int scale = (pass ? 2 * digits : digits) - 10;
     double used = 0;
     auto relation = flint::integer_relation(values, scale, pass ? prec2 : prec, used);
-    if (!relation || relation->front() == "0" || used > 0.5 * scale) return std::nullopt;
+    // No "few digits" rule here (unlike P's search): every element found is verified exactly
+    // afterwards (the identities in K), so a spurious relation can only fail, never prove; it
+    // must still come out the same from 2D digits.
+    if (!relation || relation->front() == "0" || used > 0.9 * scale) return std::nullopt;
     if (relation->front()[0] == '-')  // sign: c_0 > 0
       for (auto& c : *relation) c = c[0] == '-' ? c.substr(1) : (c == "0" ? c : "-" + c);
     relations.push_back(*relation);
@@ -107,6 +112,170 @@ double lower_bound(const arb_t x) {
   return out;
 }
 
+
+// Q(d, sqrt 3) as the tower Q(d)[s]/(s^2 - 3): an element a + b s with a, b in Q[d]/(P).
+struct TowerElement {
+  FmpqPoly a, b;
+};
+
+class Tower {
+ public:
+  Tower(const fmpz_poly_t p, int j) : j_(j) {
+    fmpq_poly_set_fmpz_poly(p_.value, p);
+    m_ = static_cast<int>(fmpz_poly_degree(p));
+  }
+  int m() const { return m_; }
+  // out = x * (d + j s)
+  void times_theta(TowerElement& out, const TowerElement& x) const {
+    FmpqPoly d, a, b, t;
+    fmpq_poly_set_coeff_si(d.value, 1, 1);
+    // (a + b s)(d + j s) = (a d + 3 j b) + (b d + j a) s
+    fmpq_poly_mul(a.value, x.a.value, d.value);
+    fmpq_poly_scalar_mul_si(t.value, x.b.value, 3 * j_);
+    fmpq_poly_add(a.value, a.value, t.value);
+    fmpq_poly_mul(b.value, x.b.value, d.value);
+    fmpq_poly_scalar_mul_si(t.value, x.a.value, j_);
+    fmpq_poly_add(b.value, b.value, t.value);
+    fmpq_poly_rem(out.a.value, a.value, p_.value);
+    fmpq_poly_rem(out.b.value, b.value, p_.value);
+  }
+  // Entry r of the coordinate vector (a_0 .. a_{m-1}, b_0 .. b_{m-1}).
+  void coordinate(fmpq_t out, const TowerElement& x, int r) const {
+    if (r < m_)
+      fmpq_poly_get_coeff_fmpq(out, x.a.value, r);
+    else
+      fmpq_poly_get_coeff_fmpq(out, x.b.value, r - m_);
+  }
+
+ private:
+  FmpqPoly p_;
+  int m_ = 0, j_ = 1;
+};
+
+// The norm of d + j sqrt 3 over Q: N(x) = A^2 - 3 B^2 where P(x - j s) = A(x) + s B(x), s^2 = 3;
+// its roots are d' +- j sqrt 3 over the roots d' of P. Primitive, positive leading coefficient.
+void norm_polynomial(fmpz_poly_t out, const fmpz_poly_t p, int j) {
+  FmpzPoly a, b, na, nb, x, term, acc_a, acc_b;
+  fmpz_poly_one(a.value);  // (x - j s)^0
+  fmpz_poly_set_coeff_si(x.value, 1, 1);
+  for (slong k = 0; k <= fmpz_poly_degree(p); ++k) {
+    const fmpz* c = fmpz_poly_get_coeff_ptr(p, k);
+    if (c) {
+      fmpz_poly_scalar_mul_fmpz(term.value, a.value, c);
+      fmpz_poly_add(acc_a.value, acc_a.value, term.value);
+      fmpz_poly_scalar_mul_fmpz(term.value, b.value, c);
+      fmpz_poly_add(acc_b.value, acc_b.value, term.value);
+    }
+    // (A + s B)(x - j s) = (A x - 3 j B) + s (B x - j A)
+    fmpz_poly_mul(na.value, a.value, x.value);
+    fmpz_poly_scalar_mul_si(term.value, b.value, 3 * j);
+    fmpz_poly_sub(na.value, na.value, term.value);
+    fmpz_poly_mul(nb.value, b.value, x.value);
+    fmpz_poly_scalar_mul_si(term.value, a.value, j);
+    fmpz_poly_sub(nb.value, nb.value, term.value);
+    fmpz_poly_swap(a.value, na.value);
+    fmpz_poly_swap(b.value, nb.value);
+  }
+  fmpz_poly_sqr(out, acc_a.value);
+  fmpz_poly_sqr(term.value, acc_b.value);
+  fmpz_poly_scalar_mul_si(term.value, term.value, 3);
+  fmpz_poly_sub(out, out, term.value);
+  fmpz_poly_primitive_part(out, out);
+  if (fmpz_sgn(fmpz_poly_lead(out)) < 0) fmpz_poly_neg(out, out);
+}
+
+bool irreducible(const fmpz_poly_t f) {
+  fmpz_poly_factor_t factors;
+  fmpz_poly_factor_init(factors);
+  fmpz_poly_factor(factors, f);
+  const bool one = factors->num == 1 && factors->exp[0] == 1;
+  fmpz_poly_factor_clear(factors);
+  return one;
+}
+
+// The tower's coordinates -> the power basis of t = d + j sqrt 3: the inverse of the matrix whose
+// column i holds t^i's tower coordinates.
+class BasisChange {
+ public:
+  BasisChange(const Tower& tower) : size_(2 * tower.m()) {
+    fmpq_mat_init(to_t_, size_, size_);
+    fmpq_mat_t powers;
+    fmpq_mat_init(powers, size_, size_);
+    TowerElement power;
+    fmpq_poly_one(power.a.value);
+    for (int i = 0; i < size_; ++i) {
+      for (int r = 0; r < size_; ++r) tower.coordinate(fmpq_mat_entry(powers, r, i), power, r);
+      tower.times_theta(power, power);
+    }
+    ok_ = fmpq_mat_inv(to_t_, powers) != 0;
+    fmpq_mat_clear(powers);
+  }
+  ~BasisChange() { fmpq_mat_clear(to_t_); }
+  BasisChange(const BasisChange&) = delete;
+  BasisChange& operator=(const BasisChange&) = delete;
+  bool ok() const { return ok_; }
+  // The element with tower coordinates v (size 2m) as a polynomial in t.
+  RationalPolynomial in_t(const std::vector<std::string>& v) const {
+    fmpq_mat_t column, result;
+    fmpq_mat_init(column, size_, 1);
+    fmpq_mat_init(result, size_, 1);
+    for (int r = 0; r < size_; ++r) fmpq_set_str(fmpq_mat_entry(column, r, 0), v[static_cast<std::size_t>(r)].c_str(), 10);
+    fmpq_mat_mul(result, to_t_, column);
+    FmpqPoly poly;
+    for (int r = 0; r < size_; ++r) fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
+    fmpq_mat_clear(column);
+    fmpq_mat_clear(result);
+    return flint::strings_from_fmpq_poly(poly.value);
+  }
+
+ private:
+  int size_;
+  fmpq_mat_t to_t_;
+  bool ok_ = false;
+};
+
+// A value's tower coordinates from an integer relation among [value, 1, d, .., d^(m-1), s, s d,
+// .., s d^(m-1)] found at D digits and the same at 2D (exactness is verified afterwards).
+std::optional<std::vector<std::string>> tower_coordinates(const arb_t value, const arb_t value2,
+                                                          const arb_t d, const arb_t d2,
+                                                          const arb_t s, const arb_t s2, int m,
+                                                          int digits) {
+  const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
+  std::vector<std::vector<std::string>> relations;
+  for (int pass = 0; pass < 2; ++pass) {
+    const slong p = pass ? prec2 : prec;
+    Balls basis = powers_of(pass ? d2 : d, m, p);
+    for (int i = 0; i < m; ++i) {
+      basis.push_back(std::make_unique<Arb>());
+      arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value, pass ? s2 : s, p);
+    }
+    std::vector<const arb_struct*> values{pass ? value2 : value};
+    for (const auto& b : basis) values.push_back(b->value);
+    const int scale = (pass ? 2 * digits : digits) - 10;
+    double used = 0;
+    auto relation = flint::integer_relation(values, scale, p, used);
+    if (!relation || relation->front() == "0" || used > 0.9 * scale) return std::nullopt;
+    if (relation->front()[0] == '-')
+      for (auto& c : *relation) c = c[0] == '-' ? c.substr(1) : (c == "0" ? c : "-" + c);
+    relations.push_back(*relation);
+  }
+  if (relations[0] != relations[1]) return std::nullopt;
+  const auto& c = relations[0];
+  std::vector<std::string> coordinates;
+  Fmpq q;
+  flint::Fmpz numerator, denominator;
+  fmpz_set_str(denominator.value, c[0].c_str(), 10);
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    fmpz_set_str(numerator.value, c[i].c_str(), 10);
+    fmpz_neg(numerator.value, numerator.value);
+    fmpq_set_fmpz_frac(q.value, numerator.value, denominator.value);
+    char* text = fmpq_get_str(nullptr, 10, q.value);
+    coordinates.emplace_back(text);
+    flint_free(text);
+  }
+  return coordinates;
+}
+
 }  // namespace
 
 ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPolynomial& d_poly) {
@@ -126,10 +295,15 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   FmpzPoly p;
   flint::poly_from_strings(p.value, d_poly.polynomial.coefficients);
 
-  // The field: Q(d) when it holds sqrt(3), else Q(d + j sqrt(3)) of degree 2m.
+  // The field: Q(d) when an integer relation puts sqrt(3) there; else Q(d, sqrt 3) of degree 2m,
+  // generated by t = d + j sqrt 3 for the first j whose norm polynomial (exact) is irreducible:
+  // elements are found in the tower basis d^a, sqrt3 d^a (small coefficients) and converted
+  // exactly to powers of t.
   Arb t, t2;
   int k = 0;
   std::optional<RationalPolynomial> sqrt3;
+  std::unique_ptr<Tower> tower;
+  std::unique_ptr<BasisChange> to_t;
   if (m > 1) sqrt3 = express_in_field(s.value, s2.value, d.value, d2.value, m, digits);
   if (sqrt3) {
     out.field = d_poly.polynomial;
@@ -141,24 +315,31 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     k = m;
   } else {
     for (int j = 1; j <= 5 && k == 0; ++j) {
+      FmpzPoly norm;
+      norm_polynomial(norm.value, p.value, j);
+      if (fmpz_poly_degree(norm.value) != 2 * m || !irreducible(norm.value)) continue;
+      tower = std::make_unique<Tower>(p.value, j);
+      to_t = std::make_unique<BasisChange>(*tower);
+      if (!to_t->ok()) continue;
       arb_mul_ui(t2.value, s2.value, static_cast<ulong>(j), prec2);
       arb_add(t2.value, t2.value, d2.value, prec2);
-      const MinimalPolynomial theta =
-          flint::minimal_polynomial_of_ball(t2.value, digits, 2 * m);
-      if (!theta.found || theta.polynomial.degree() != 2 * m) continue;
       flint::round_ball(t.value, t2.value, digits);
-      const auto d_in = express_in_field(d.value, d2.value, t.value, t2.value, 2 * m, digits);
-      if (!d_in) continue;
-      out.field = theta.polynomial;
-      out.embedding = theta.root;
-      out.d_in_field = *d_in;
-      // sqrt(3) = (t - d) / j.
-      FmpqPoly tpoly, dpoly;
-      flint::fmpq_poly_from_strings(tpoly.value, {"0", "1"});
-      flint::fmpq_poly_from_strings(dpoly.value, d_in->coefficients);
-      fmpq_poly_sub(tpoly.value, tpoly.value, dpoly.value);
-      fmpq_poly_scalar_div_si(tpoly.value, tpoly.value, j);
-      out.sqrt3_in_field = flint::strings_from_fmpq_poly(tpoly.value);
+      out.field = flint::strings_from_poly(norm.value);
+      out.embedding = d_poly.root;  // replaced by t0's interval below
+      std::vector<std::string> d_tower(static_cast<std::size_t>(2 * m), "0"), s_tower = d_tower;
+      if (m == 1) {  // d rational: its tower coordinate is d itself
+        FmpqPoly reduced, x;
+        fmpq_poly_set_coeff_si(x.value, 1, 1);
+        FmpqPoly pq;
+        fmpq_poly_set_fmpz_poly(pq.value, p.value);
+        fmpq_poly_rem(reduced.value, x.value, pq.value);
+        d_tower[0] = flint::strings_from_fmpq_poly(reduced.value).coefficients[0];
+      } else {
+        d_tower[1] = "1";
+      }
+      s_tower[static_cast<std::size_t>(m)] = "1";
+      out.d_in_field = to_t->in_t(d_tower);
+      out.sqrt3_in_field = to_t->in_t(s_tower);
       k = 2 * m;
     }
   }
@@ -224,7 +405,14 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       Arb v2, v;
       flint::set_decimal(v2.value, text, 2 * digits, prec2);
       flint::round_ball(v.value, v2.value, digits);
-      const auto element = express_in_field(v.value, v2.value, t.value, t2.value, k, digits);
+      std::optional<RationalPolynomial> element;
+      if (tower) {
+        const auto coordinates =
+            tower_coordinates(v.value, v2.value, d.value, d2.value, s.value, s2.value, m, digits);
+        if (coordinates) element = to_t->in_t(*coordinates);
+      } else {
+        element = express_in_field(v.value, v2.value, t.value, t2.value, k, digits);
+      }
       if (!element) {
         out.reason = fmt::format("coordinate {} of point {} is not in the field of degree {} at {} digits",
                                  c == 0 ? "x" : "y", i + 1, k, digits);
