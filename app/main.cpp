@@ -40,7 +40,7 @@ Action add_build(CLI::App& cli, const GlobalOptions& g, BuildOptions& b) {
   c->add_option("--n", b.n, "number of disks: build the catalogue's best class containing n");
   c->add_option("--variant", b.variant, "variant (e.g. rattler, cavity-1, full)");
   c->add_option("--digits", b.digits, "significant digits of d (above 18: MPFR polish)")
-      ->check(CLI::Range(1, 1000));
+      ->check(CLI::Range(1, 100000));
   c->add_option("-o,--output", b.output,
                 "write coordinates: .txt (x y), .csv, .json, or .pck (i x y, record tables)");
   c->add_flag("!--no-polish", b.polish, "skip the Newton polish of the bond system");
@@ -66,7 +66,7 @@ Action add_analyze(CLI::App& cli, AnalyzeOptions& a) {
                 "unit-triangle (centres in the side-1 triangle), radius (circles of radius r in "
                 "a side-1 triangle) or unit-disk-side (unit circles in a triangle of side S)");
   c->add_option("--digits", a.digits, "significant digits of d, r, S (above 18: MPFR polish)")
-      ->check(CLI::Range(1, 1000));
+      ->check(CLI::Range(1, 100000));
   c->add_option("--n", a.n, "expected number of points")->check(CLI::Range(1LL, 100000000LL));
   c->add_option("-o,--output", a.output,
                 "write the certified packing: .txt, .csv, .json or .pck (i x y)");

@@ -3,7 +3,13 @@
 // (n = 22, 79, 254, 991). Run: build/bench/bench_analysis
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
@@ -165,6 +171,54 @@ BENCHMARK(BM_AnalyzeBilliardsEndState)
     ->Arg(1000)
     ->Arg(3000)
     ->Arg(5000)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+// The MPFR polish of an atlas packing to D digits (docs/precision.md): data/atlas/t{n}a.txt
+// analysed once in long double (bonds, rattlers), then polish_multiprecision timed alone.
+// Arguments {n, D}; counters: Newton iterations, double factorizations, log10 residual.
+// The atlas is found beside this file's source, or in $TRIPACK_ATLAS_DIR.
+const pipeline::Analysis& atlas_analysis(long n) {
+  static std::map<long, pipeline::Analysis> cache;
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  const char* env = std::getenv("TRIPACK_ATLAS_DIR");
+  const std::filesystem::path dir =
+      env ? std::filesystem::path(env)
+          : std::filesystem::path(__FILE__).parent_path().parent_path() / "data" / "atlas";
+  pipeline::AnalyzeRequest request;
+  std::string name = "t";  // appended, not concatenated: GCC 12's -Wrestrict false positive
+  name += std::to_string(n);
+  name += "a.txt";
+  request.file = (dir / name).string();
+  return cache.emplace(n, pipeline::analyze_file(request).analysis).first->second;
+}
+
+void BM_PolishDigits(benchmark::State& s) {
+  const pipeline::Analysis& a = atlas_analysis(s.range(0));
+  const Pattern& pat = a.pattern;
+  const int digits = static_cast<int>(s.range(1));
+  MultiprecisionPolish mp;
+  try {
+    for (auto _ : s) mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, digits);
+  } catch (const std::invalid_argument& e) {  // digits beyond the limit
+    s.SkipWithError(e.what());
+    return;
+  }
+  if (!mp.converged) s.SkipWithError("not converged");
+  s.counters["digits"] = digits;
+  s.counters["iterations"] = mp.iterations;
+  s.counters["sweeps"] = mp.sweeps;
+  s.counters["factorizations"] = mp.factorizations;
+  s.counters["log10_residual"] = mp.log10_max_residual;
+  set_n(s, pat.packing.size());
+}
+BENCHMARK(BM_PolishDigits)
+    ->ArgsProduct({{22, 53, 200}, {100, 300, 1000}})
+    ->Unit(benchmark::kMillisecond);
+// Beyond 1000 digits: one iteration each (up to seconds).
+BENCHMARK(BM_PolishDigits)
+    ->ArgsProduct({{22, 53, 200}, {2000, 5000, 10000, 20000}})
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 

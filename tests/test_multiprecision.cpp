@@ -8,6 +8,7 @@
 #include <string>
 
 #include "constructors/builders.hpp"
+#include "pipeline/analyze.hpp"
 #include "polish/polish_mp.hpp"
 
 namespace tripack {
@@ -130,8 +131,9 @@ TEST(Multiprecision, RejectsDigitsOutOfRange) {
   const Pattern pat = build_four_delta(2);
   EXPECT_THROW(polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 0),
                std::invalid_argument);
-  EXPECT_THROW(polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 1001),
-               std::invalid_argument);
+  EXPECT_THROW(
+      polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, kMaxMultiprecisionDigits + 1),
+      std::invalid_argument);
 }
 
 TEST(Multiprecision, InconsistentSystemDoesNotConverge) {
@@ -213,6 +215,90 @@ TEST(Multiprecision, RattlersAreCentredInCagesNarrowerThanLongDouble) {
   EXPECT_EQ(mp.points[0][0], "0.5");  // the others untouched
   // Without rattlers (or an unconverged polish) nothing moves.
   EXPECT_EQ(centre_rattlers_multiprecision(mp, {}), std::numeric_limits<double>::infinity());
+}
+
+// An atlas packing (data/atlas), analysed in long double: its bonds and rattlers.
+Pattern atlas_pattern(const std::string& label) {
+  pipeline::AnalyzeRequest request;
+  request.file = std::string(TRIPACK_SOURCE_DIR) + "/data/atlas/" + label + ".txt";
+  const pipeline::FileAnalysis fa = pipeline::analyze_file(request);
+  EXPECT_TRUE(fa.analysis.certified()) << label;
+  return fa.analysis.pattern;
+}
+
+// docs/precision.md: precision on demand must not change a digit. The 2000-digit polish of t22a
+// agrees with the 1000-digit one on the first 995 digits of d, L and every coordinate, and both
+// agree with the closed form; Newton's quadratic convergence shows in the iteration count (the
+// linear scheme before it took 132 at 2000 digits).
+TEST(Multiprecision, T22aTo2000DigitsAgreesWith1000) {
+  const Pattern pat = atlas_pattern("t22a");
+  ASSERT_EQ(pat.packing.size(), 22u);
+  const auto mp1 = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 1000);
+  const auto mp2 = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 2000);
+  ASSERT_TRUE(mp1.converged);
+  ASSERT_TRUE(mp2.converged);
+  EXPECT_LT(mp2.log10_max_residual, -2003);
+  EXPECT_LE(mp2.iterations, 10);
+  // d = 0.1793...: "0." and 995 significant digits.
+  EXPECT_EQ(mp2.d.substr(0, 997), mp1.d.substr(0, 997));
+  // Numerically: |a - b| <= 10^-995 |a| for d, L and the coordinates (which lie in [0, 1]: there
+  // 995 decimals).
+  auto expect_agree = [](const std::string& a, const std::string& b, bool relative) {
+    Num x(2000), y(2000), bound(2000);
+    ASSERT_EQ(mpfr_set_str(x.v, a.c_str(), 10, MPFR_RNDN), 0);
+    ASSERT_EQ(mpfr_set_str(y.v, b.c_str(), 10, MPFR_RNDN), 0);
+    mpfr_sub(y.v, y.v, x.v, MPFR_RNDN);
+    mpfr_set_si(bound.v, -995, MPFR_RNDN);
+    mpfr_exp10(bound.v, bound.v, MPFR_RNDN);
+    if (relative) mpfr_mul(bound.v, bound.v, x.v, MPFR_RNDN);
+    EXPECT_LE(mpfr_cmpabs(y.v, bound.v), 0) << a.substr(0, 20);
+  };
+  expect_agree(mp1.d, mp2.d, true);
+  expect_agree(mp1.L, mp2.L, true);
+  ASSERT_EQ(mp2.points.size(), 22u);
+  for (std::size_t i = 0; i < 22; ++i)
+    for (std::size_t c = 0; c < 2; ++c) expect_agree(mp1.points[i][c], mp2.points[i][c], false);
+  Num exact(2000);
+  t22a_closed_form(exact, 2000);
+  expect_close(mp1.d, exact, 1000);
+  expect_close(mp2.d, exact, 2000);
+}
+
+// GL1995's closed form for n = 13: d(13) is a root of 4x^4 - 144x^3 + 180x^2 - 72x + 9. The
+// 3000-digit d of t13a, evaluated in MPFR at 3050 digits (not tripack's polish arithmetic),
+// makes it vanish to better than 10^-2990 (|p'(d)| ~ 8.5, so the 3000th digit's rounding alone
+// leaves ~4e-3000).
+TEST(Multiprecision, T13aTo3000DigitsIsARootOfGL1995Quartic) {
+  const Pattern pat = atlas_pattern("t13a");
+  ASSERT_EQ(pat.packing.size(), 13u);
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 3000);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_EQ(mp.d.substr(0, 12), "0.2518132366");
+  EXPECT_EQ(mp.d.size(), 3002u);  // "0." and 3000 digits
+  Num x(3050), p(3050), bound(3050);
+  ASSERT_EQ(mpfr_set_str(x.v, mp.d.c_str(), 10, MPFR_RNDN), 0);
+  mpfr_set_si(p.v, 4, MPFR_RNDN);  // Horner: (((4x - 144)x + 180)x - 72)x + 9
+  for (long coefficient : {-144L, 180L, -72L, 9L}) {
+    mpfr_mul(p.v, p.v, x.v, MPFR_RNDN);
+    mpfr_add_si(p.v, p.v, coefficient, MPFR_RNDN);
+  }
+  mpfr_set_si(bound.v, -2990, MPFR_RNDN);
+  mpfr_exp10(bound.v, bound.v, MPFR_RNDN);
+  EXPECT_LT(mpfr_cmpabs(p.v, bound.v), 0)
+      << "log10 |p(d)| = " << mpfr_get_d(p.v, MPFR_RNDN);
+}
+
+// Deep precision against a closed form: d(4Delta(3)) = 1/(4 + sqrt3) to 10,000 digits.
+TEST(Multiprecision, FourDeltaTo10000Digits) {
+  const Pattern pat = build_four_delta(3);
+  const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 10000);
+  ASSERT_TRUE(mp.converged);
+  EXPECT_LE(mp.iterations, 12);
+  Num exact(10000);
+  mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
+  mpfr_add_ui(exact.v, exact.v, 4, MPFR_RNDN);
+  mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+  expect_close(mp.d, exact, 10000);
 }
 
 TEST(Multiprecision, EvenRippleN254To50Digits) {
