@@ -68,8 +68,8 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
                              const std::vector<std::array<std::string, 2>>& given,
                              const ExactSettings& settings) {
   if (settings.digits < 40) throw std::invalid_argument("exact: --digits must be at least 40");
-  if (2 * settings.digits > 1000)
-    throw std::invalid_argument("exact: --digits must be at most 500 (the polish gives 2D <= 1000 digits)");
+  if (settings.digits > 20000)
+    throw std::invalid_argument("exact: --digits must be at most 20000 (LLL at 2D digits beyond that takes hours)");
   ExactResult result;
   const Analysis analysis = analyze_packing(packing, {});
   result.pattern = analysis.pattern;

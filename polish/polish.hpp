@@ -6,7 +6,7 @@
 // rank-deficient (Delta(k)-1 is floppy). Steps are rank-revealing sparse least-squares solves
 // (SuiteSparseQR, multifrontal and rank-revealing, through Eigen), residuals are evaluated in long
 // double so the result is accurate to double rounding regardless of the Jacobian's conditioning
-// (mixed-precision refinement). polish/polish_mp.hpp takes the result on to 30-1000 digits in
+// (mixed-precision refinement). polish/polish_mp.hpp takes the result on to 30-100,000 digits in
 // MPFR; both share the equations and the Jacobian through polish/bond_system.hpp.
 #pragma once
 

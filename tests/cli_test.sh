@@ -94,7 +94,7 @@ expect_error "analyze: malformed text" "line 2" analyze "$tmp/malformed.txt"
 expect_error "analyze: malformed json" "point 1" analyze "$tmp/malformed.json"
 expect_error "analyze: wrong point count" "expected 23 points" analyze "$tmp/duplicate.txt" --n 23
 expect_error "analyze: unknown convention" "unknown convention" analyze "$tmp/nan.txt" --convention diameter
-expect_error "digits out of range" "digits" build four-delta --k 2 --digits 5000
+expect_error "digits out of range" "digits" build four-delta --k 2 --digits 100001
 
 # analyze of a written packing certifies it and finds its 2 rattlers (GL1995 Fig.t22).
 "$TRIPACK" build even-ripple --k 3 -o "$tmp/t22a.csv" >/dev/null
