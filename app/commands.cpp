@@ -410,6 +410,7 @@ int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o) {
   settings.exact.digits = o.digits;
   settings.exact.max_degree = o.max_degree;
   settings.threads = o.threads;
+  settings.retry_none = o.retry_none;
   std::stringstream items(o.n_range);
   for (std::string item; std::getline(items, item, ',');) {
     const auto [a, b] = parse_range(item, "--n");

@@ -115,6 +115,7 @@ struct ExactAtlasOptions {
   int digits = 300;
   int max_degree = 48;
   int threads = 2;
+  bool retry_none = false;
 };
 int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o);
 

@@ -305,6 +305,8 @@ Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions&
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));
   c->add_option("--threads", o.threads, "rows at once (default 2)")->check(CLI::Range(1, 256));
+  c->add_flag("--retry-none", o.retry_none,
+              "run the rows whose proof is 'none' again (with more --digits, a larger --max-degree)");
   return [c, &g, &o] { return *c ? cmd_exact_atlas(g, o) : -1; };
 }
 

@@ -20,15 +20,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The labels already in the table (its second column).
-std::set<std::string> labels_in(const fs::path& csv) {
+// The labels already in the table (its second column); with `except_none`, not those whose
+// proof is "none" (they are run again).
+std::set<std::string> labels_in(const fs::path& csv, bool except_none) {
   std::set<std::string> labels;
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);  // header
   while (std::getline(in, line)) {
     const auto a = line.find(','), b = line.find(',', a + 1);
-    if (a != std::string::npos && b != std::string::npos) labels.insert(line.substr(a + 1, b - a - 1));
+    if (a == std::string::npos || b == std::string::npos) continue;
+    if (except_none && split_csv(line).size() > 6 && split_csv(line)[6] == "none") continue;
+    labels.insert(line.substr(a + 1, b - a - 1));
   }
   return labels;
 }
@@ -41,12 +44,17 @@ void sort_table(const fs::path& csv, const std::vector<std::string>& order, cons
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
-  std::vector<std::pair<std::size_t, std::string>> rows;
+  // A label's last row wins (a row run again is appended after its old one).
+  std::map<std::string, std::string> last;
+  std::vector<std::string> labels;
   while (std::getline(in, line)) {
     const auto a = line.find(','), b = line.find(',', a + 1);
     const std::string label = a == std::string::npos ? "" : line.substr(a + 1, b - a - 1);
-    rows.emplace_back(rank.count(label) ? rank[label] : order.size(), line);
+    if (!last.count(label)) labels.push_back(label);
+    last[label] = line;
   }
+  std::vector<std::pair<std::size_t, std::string>> rows;
+  for (const auto& label : labels) rows.emplace_back(rank.count(label) ? rank[label] : order.size(), last[label]);
   std::stable_sort(rows.begin(), rows.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   const fs::path temporary = csv.string() + ".tmp";
@@ -120,7 +128,7 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     out << header << "\n";
     if (!out) throw std::runtime_error("cannot write " + csv.string());
   }
-  const std::set<std::string> done = labels_in(csv);
+  const std::set<std::string> done = labels_in(csv, settings.retry_none);
   ExactAtlasResult result;
   std::vector<std::size_t> todo;
   std::vector<std::string> order;

@@ -21,6 +21,7 @@ struct ExactAtlasSettings {
   pipeline::ExactSettings exact;
   std::vector<long long> n_values;  // only these n (empty: every row)
   int threads = 2;
+  bool retry_none = false;  // run the rows whose proof is "none" again (e.g. with more digits)
 };
 
 struct ExactAtlasResult {
