@@ -41,6 +41,8 @@ reasons = collections.Counter()
 for r in rows:
     if r["proof"] != "exact":
         reason = r["reason"].split(" at ")[0].split(": ")[0] if r["reason"] else "-"
+        if "not in the field" in reason:
+            reason = "a coordinate is not in Q(d, sqrt 3) at the digits tried"
         reasons[reason[:70]] += 1
 print("\n| what stopped a row short of 'exact' | rows |\n|---|---|")
 for reason, k in reasons.most_common():
