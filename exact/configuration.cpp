@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
@@ -33,23 +34,22 @@ Balls powers_of(const arb_t x, int count, slong prec) {
   return out;
 }
 
-// The value as an element of Q(t): value = -(c_1 + c_2 t + ...) / c_0 from the relation among
-// [value, 1, t, ..., t^(k-1)], found at D digits and found again (the same, up to sign) at 2D.
-std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_t value2,
-                                                   const arb_t t, const arb_t t2, int k,
-                                                   int digits) {
+// The value as a rational combination of a basis: value = -(c_1 b_1 + c_2 b_2 + ...) / c_0 from
+// the integer relation among [value, b_1, b_2, ...], found at D digits and found again (the same,
+// up to sign) at 2D; basis(pass, prec) gives the basis balls of D digits (pass 0) or 2D (pass 1).
+// No "few digits" rule here (unlike P's search): every element found is verified exactly
+// afterwards (the identities in K), so a spurious relation can only fail, never prove.
+std::optional<std::vector<std::string>> combination_of(
+    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis, int digits) {
   const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
   std::vector<std::vector<std::string>> relations;
   for (int pass = 0; pass < 2; ++pass) {
-    const Balls powers = powers_of(pass ? t2 : t, k, pass ? prec2 : prec);
+    const Balls balls = basis(pass, pass ? prec2 : prec);
     std::vector<const arb_struct*> values{pass ? value2 : value};
-    for (const auto& p : powers) values.push_back(p->value);
+    for (const auto& b : balls) values.push_back(b->value);
     const int scale = (pass ? 2 * digits : digits) - 10;
     double used = 0;
     auto relation = flint::integer_relation(values, scale, pass ? prec2 : prec, used);
-    // No "few digits" rule here (unlike P's search): every element found is verified exactly
-    // afterwards (the identities in K), so a spurious relation can only fail, never prove; it
-    // must still come out the same from 2D digits.
     if (!relation || relation->front() == "0" || used > 0.9 * scale) return std::nullopt;
     if (relation->front()[0] == '-')  // sign: c_0 > 0
       for (auto& c : *relation) c = c[0] == '-' ? c.substr(1) : (c == "0" ? c : "-" + c);
@@ -57,7 +57,7 @@ std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_
   }
   if (relations[0] != relations[1]) return std::nullopt;
   const auto& c = relations[0];
-  RationalPolynomial element;
+  std::vector<std::string> combination;
   Fmpq q;
   flint::Fmpz numerator, denominator;
   fmpz_set_str(denominator.value, c[0].c_str(), 10);
@@ -66,10 +66,21 @@ std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_
     fmpz_neg(numerator.value, numerator.value);
     fmpq_set_fmpz_frac(q.value, numerator.value, denominator.value);
     char* text = fmpq_get_str(nullptr, 10, q.value);
-    element.coefficients.emplace_back(text);
+    combination.emplace_back(text);
     flint_free(text);
   }
-  return element;
+  return combination;
+}
+
+// The value as an element of Q(t): a combination of 1, t, ..., t^(k-1).
+std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_t value2,
+                                                   const arb_t t, const arb_t t2, int k,
+                                                   int digits) {
+  const auto combination = combination_of(
+      value, value2, [&](int pass, slong prec) { return powers_of(pass ? t2 : t, k, prec); },
+      digits);
+  if (!combination) return std::nullopt;
+  return RationalPolynomial{*combination};
 }
 
 void decimal_to_fmpq(fmpq_t out, std::string text, int keep_digits) {
@@ -234,46 +245,22 @@ class BasisChange {
   bool ok_ = false;
 };
 
-// A value's tower coordinates from an integer relation among [value, 1, d, .., d^(m-1), s, s d,
-// .., s d^(m-1)] found at D digits and the same at 2D (exactness is verified afterwards).
+// A value's tower coordinates: a combination of d^0 .. d^(m-1), s d^0 .. s d^(m-1).
 std::optional<std::vector<std::string>> tower_coordinates(const arb_t value, const arb_t value2,
                                                           const arb_t d, const arb_t d2,
                                                           const arb_t s, const arb_t s2, int m,
                                                           int digits) {
-  const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
-  std::vector<std::vector<std::string>> relations;
-  for (int pass = 0; pass < 2; ++pass) {
-    const slong p = pass ? prec2 : prec;
-    Balls basis = powers_of(pass ? d2 : d, m, p);
-    for (int i = 0; i < m; ++i) {
-      basis.push_back(std::make_unique<Arb>());
-      arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value, pass ? s2 : s, p);
-    }
-    std::vector<const arb_struct*> values{pass ? value2 : value};
-    for (const auto& b : basis) values.push_back(b->value);
-    const int scale = (pass ? 2 * digits : digits) - 10;
-    double used = 0;
-    auto relation = flint::integer_relation(values, scale, p, used);
-    if (!relation || relation->front() == "0" || used > 0.9 * scale) return std::nullopt;
-    if (relation->front()[0] == '-')
-      for (auto& c : *relation) c = c[0] == '-' ? c.substr(1) : (c == "0" ? c : "-" + c);
-    relations.push_back(*relation);
-  }
-  if (relations[0] != relations[1]) return std::nullopt;
-  const auto& c = relations[0];
-  std::vector<std::string> coordinates;
-  Fmpq q;
-  flint::Fmpz numerator, denominator;
-  fmpz_set_str(denominator.value, c[0].c_str(), 10);
-  for (std::size_t i = 1; i < c.size(); ++i) {
-    fmpz_set_str(numerator.value, c[i].c_str(), 10);
-    fmpz_neg(numerator.value, numerator.value);
-    fmpq_set_fmpz_frac(q.value, numerator.value, denominator.value);
-    char* text = fmpq_get_str(nullptr, 10, q.value);
-    coordinates.emplace_back(text);
-    flint_free(text);
-  }
-  return coordinates;
+  return combination_of(
+      value, value2,
+      [&](int pass, slong prec) {
+        Balls basis = powers_of(pass ? d2 : d, m, prec);
+        for (int i = 0; i < m; ++i) {
+          basis.push_back(std::make_unique<Arb>());
+          arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value, pass ? s2 : s, prec);
+        }
+        return basis;
+      },
+      digits);
 }
 
 }  // namespace
