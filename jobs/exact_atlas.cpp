@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/io.hpp"
 #include "core/timing.hpp"
 #include "exact/certificate.hpp"
 #include "jobs/atlas_files.hpp"
@@ -67,14 +68,6 @@ void sort_table(const fs::path& csv, const std::vector<std::string>& order, cons
   fs::rename(temporary, csv);
 }
 
-// CSV field: quoted when it holds a comma, a quote or a newline.
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 }  // namespace
 
 std::string exact_csv_header() { return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds"; }
@@ -130,7 +123,7 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
   }
   const std::set<std::string> done = labels_in(csv, settings.retry_none);
   ExactAtlasResult result;
-  std::vector<std::size_t> todo;
+  std::vector<std::size_t> to_run;
   std::vector<std::string> order;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& row = rows[i];
@@ -142,17 +135,17 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     if (done.count(row.label))
       ++result.skipped;
     else
-      todo.push_back(i);
+      to_run.push_back(i);
   }
   // Largest n first: the slowest start early.
-  std::stable_sort(todo.begin(), todo.end(),
+  std::stable_sort(to_run.begin(), to_run.end(),
                    [&](std::size_t a, std::size_t b) { return rows[a].n() > rows[b].n(); });
   std::vector<pipeline::ExactResult> found(rows.size());
   std::ofstream table(csv, std::ios::app);
-  ProgressCounter counter("exact", static_cast<long long>(todo.size()));
+  ProgressCounter counter("exact", static_cast<long long>(to_run.size()));
   JobItems items;
   items.count = rows.size();
-  items.order = todo;
+  items.order = to_run;
   items.run = [&](std::size_t i) {
     const PackingRecord& row = rows[i];
     pipeline::ExactResult& r = found[i];
