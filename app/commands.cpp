@@ -64,6 +64,20 @@ void print_result(const Result& result, const OutputOptions& out) {
   std::cout << buffer.str() << std::flush;
 }
 
+// A positive finite decimal given to `option`.
+long double parse_positive_decimal(const std::string& text, const std::string& option) {
+  std::size_t used = 0;
+  long double v = 0;
+  try {
+    v = std::stold(text, &used);
+  } catch (...) {
+    used = 0;
+  }
+  if (used != text.size() || used == 0 || !(v > 0) || !std::isfinite(v))
+    throw std::invalid_argument(option + " must be a positive decimal number, not '" + text + "'");
+  return v;
+}
+
 // "K" or "A..B" given to `option` (named in the errors).
 std::pair<long, long> parse_range(const std::string& s, const std::string& option) {
   auto to_long = [&](const std::string& t) {
@@ -267,6 +281,31 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
     draw_if_asked(o.diagrams, best.pattern, best.label, best.forces);
   }
   return result.runs.size() < static_cast<std::size_t>(result.runs_asked) ? 130 : 0;
+}
+
+int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
+  jobs::SearchRequest request;
+  request.n = o.n;
+  request.seconds = o.seconds;
+  request.steps = o.steps;
+  request.seed = o.seed;
+  request.threads = o.threads;
+  if (o.method == "restarts") request.method = jobs::SearchMethod::Restarts;
+  else if (o.method != "basin-hopping")
+    throw std::invalid_argument("--method must be basin-hopping or restarts, not '" + o.method +
+                                "'");
+  if (!o.target.empty()) request.target = parse_positive_decimal(o.target, "--target");
+  request.cancel = g.cancel;
+  report::ProgressLine progress(std::cerr, terminal_line(fmt::format("search n={}", o.n), o.out));
+  request.progress = progress.callback();
+  const auto result = jobs::run_search(request);
+  progress.finish();
+  print_result(result, o.out);
+  if (!result.packings.empty()) {
+    const auto& best = result.packings.front();
+    draw_if_asked(o.diagrams, best.pattern, best.label, best.forces);
+  }
+  return result.cancelled ? 130 : 0;
 }
 
 int cmd_compare(const GlobalOptions& g, const BilliardsCommandOptions& o) {

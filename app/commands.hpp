@@ -81,6 +81,21 @@ struct BilliardsCommandOptions {
   OutputOptions out;
 };
 
+// `tripack search N --seconds S` (docs/search.md).
+struct SearchOptions {
+  DiagramTargets diagrams;
+  long long n = 0;
+  double seconds = 10;
+  long long steps = 0;  // 0: no step limit
+  std::uint64_t seed = 1;
+  int threads = 1;
+  std::string db;      // empty: start from nothing stored, record nothing
+  std::string method = "basin-hopping";
+  std::string target;  // stop once this d is reached (decimal)
+  OutputOptions out;
+};
+int cmd_search(const GlobalOptions& g, const SearchOptions& o);
+
 struct ExploreOptions {
   long long max_n = 300;
   int runs = 50;

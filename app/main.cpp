@@ -100,6 +100,33 @@ Action add_billiards(CLI::App& cli, const GlobalOptions& g, BilliardsCommandOpti
   return [c, &g, &o] { return *c ? cmd_billiards(g, o) : -1; };
 }
 
+Action add_search(CLI::App& cli, const GlobalOptions& g, SearchOptions& o) {
+  auto* c = cli.add_subcommand(
+      "search",
+      "Basin-hopping search for the densest packing of N disks within a time budget: the best "
+      "packing (certified), when it was first reached, and the distinct packings by rank");
+  c->add_option("N", o.n, "number of disks")->required()->check(CLI::Range(2LL, 100000LL));
+  c->add_option("--seconds", o.seconds, "wall-time budget of each chain")
+      ->check(CLI::Range(1e-3, 1e7));
+  c->add_option("--steps", o.steps,
+                "also stop each chain after this many steps (0: no limit); a step budget on one "
+                "thread is exactly reproducible")
+      ->check(CLI::Range(0LL, 1000000000LL));
+  c->add_option("--seed", o.seed, "seed of chain 0 (chain c uses seed + c)");
+  c->add_option("--threads", o.threads, "independent chains, one per thread")
+      ->check(CLI::Range(1, 256));
+  c->add_option("--db", o.db,
+                "campaign database: continue from its best packings of N and record every chain "
+                "as a unit (N, seed)");
+  c->add_option("--method", o.method,
+                "basin-hopping (the search) or restarts (independent default billiards runs, the "
+                "baseline)");
+  c->add_option("--target", o.target, "stop a chain once a certified d >= this is found");
+  add_output_flags(c, o.out, true);
+  add_diagram_options(c, o.diagrams);
+  return [c, &g, &o] { return *c ? cmd_search(g, o) : -1; };
+}
+
 Action add_compare(CLI::App& cli, const GlobalOptions& g, BilliardsCommandOptions& o) {
   auto* c = cli.add_subcommand(
       "compare", "The catalogue's best builder for N against the best billiards packing");
@@ -331,7 +358,7 @@ bool observes_cancel(const CLI::App& cli) {
     if (name == "db")
       for (const auto* sub : command->get_subcommands()) return sub->get_name() == "import";
     return name == "explore" || name == "atlas" || name == "campaign" || name == "billiards" ||
-           name == "compare" || name == "exact-atlas";
+           name == "compare" || name == "exact-atlas" || name == "search";
   }
   return false;
 }
@@ -382,6 +409,7 @@ int main(int argc, char** argv) {
   AnalyzeOptions analyze;
   CheckFormulaOptions check;
   BilliardsCommandOptions billiards, compare;
+  SearchOptions search;
   ExploreOptions explore;
   DrawOptions draw;
   CampaignOptions campaign;
@@ -400,6 +428,7 @@ int main(int argc, char** argv) {
       add_check_formula(cli, g, check),
       add_billiards(cli, g, billiards),
       add_compare(cli, g, compare),
+      add_search(cli, g, search),
       add_explore(cli, g, explore),
       add_draw(cli, g, draw),
       [&] { return *classes ? cmd_classes(g, classes_out) : -1; },

@@ -127,6 +127,16 @@ void render_csv(std::ostream& out, const BilliardsSearchResult& r, const RenderO
   packing_rows(out, r);
 }
 
+void render_csv(std::ostream& out, const SearchResult& r, const RenderOptions&) {
+  row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "chains",
+            "first_seed"});
+  for (const auto& x : r.packings)
+    row(out, {integer(r.request.n), integer(x.rank), x.label, x.d.str(kLongDoubleDigits),
+              x.L.str(kLongDoubleDigits), num(oler_delta(r.request.n, x.L.value())),
+              integer(x.bonds()), integer(x.rattlers()), flag(x.certified), integer(x.runs()),
+              integer(x.first_seed())});
+}
+
 void render_csv(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions&) {
   row(out, {"n", "constructed", "d_constructed", "bonds_constructed", "rattlers_constructed",
             "billiards_label", "d_billiards", "bonds_billiards", "rattlers_billiards",

@@ -275,6 +275,57 @@ void render_json(std::ostream& out, const BilliardsSearchResult& r, const Render
   emit(out, billiards_json(r, o));
 }
 
+void render_json(std::ostream& out, const SearchResult& r, const RenderOptions& o) {
+  json j;
+  j["n"] = r.request.n;
+  j["method"] = method_name(r.request.method);
+  j["seconds"] = r.seconds;
+  j["budget_seconds"] = r.request.seconds;
+  j["budget_steps"] = r.request.steps;
+  j["seed"] = r.request.seed;
+  j["threads"] = r.request.threads;
+  j["steps"] = r.steps();
+  j["cancelled"] = r.cancelled;
+  j["target"] = r.request.target ? json(decimal17(*r.request.target)) : json(nullptr);
+  json packings = json::array();
+  for (const auto& x : r.packings) {
+    json p{{"rank", x.rank},
+           {"label", x.label},
+           {"d", x.d.str(kLongDoubleDigits)},
+           {"L", x.L.str(kLongDoubleDigits)},
+           {"delta", static_cast<double>(oler_delta(r.request.n, 1 / x.pattern.packing.d))},
+           {"certified", x.certified},
+           {"chains", x.runs()},
+           {"first_seed", x.first_seed()}};
+    add_counts(p, x.pattern);
+    if (o.points) p["points"] = points_json(x.pattern.packing);
+    packings.push_back(p);
+  }
+  if (r.packings.empty()) {
+    j["best"] = nullptr;
+  } else {
+    j["best"] = packings.front();
+    j["best"]["seconds_to_best"] = r.seconds_to_best;
+    j["best"]["cpu_seconds_to_best"] = r.cpu_seconds_to_best;
+  }
+  j["packings"] = packings;
+  json chains = json::array();
+  for (const auto& c : r.chains)
+    chains.push_back({{"seed", c.seed},
+                      {"steps", c.steps},
+                      {"analyses", c.analyses},
+                      {"seconds", c.seconds},
+                      {"cpu_seconds", c.cpu_seconds},
+                      {"best_d", c.best_d.empty() ? json(nullptr) : json(c.best_d)},
+                      {"seconds_to_best", c.seconds_to_best},
+                      {"cpu_seconds_to_best", c.cpu_seconds_to_best},
+                      {"target_reached", c.target_reached},
+                      {"cpu_seconds_to_target",
+                       c.target_reached ? json(c.cpu_seconds_to_target) : json(nullptr)}});
+  j["chains"] = chains;
+  emit(out, j);
+}
+
 void render_json(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions& o) {
   json j;
   j["n"] = c.n;

@@ -18,6 +18,7 @@
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/exact.hpp"
 #include "jobs/compare.hpp"
+#include "jobs/search.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
 
@@ -64,6 +65,12 @@ void render_json(std::ostream& out, const jobs::BilliardsSearchResult& r,
                  const RenderOptions& o);
 void render_csv(std::ostream& out, const jobs::BilliardsSearchResult& r,
                 const RenderOptions& o);
+
+// `tripack search`: the best packing (certified, seconds_to_best), the distinct packings by rank,
+// the chains.
+void render_text(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
+void render_json(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
+void render_csv(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
 
 void render_text(std::ostream& out, const jobs::ConstructedVsBilliards& c,
                  const RenderOptions& o);

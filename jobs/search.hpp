@@ -1,0 +1,77 @@
+// `tripack search` (issue 21): a search for the densest packing of n disks that learns from what
+// it finds, with a time budget. Monotonic basin hopping on a small population (docs/search.md):
+// each step perturbs a member (shrink and regrow by billiards, or move its loosest disk to the
+// largest hole), keeps the result when it is not worse, and restarts a member from random when it
+// stops improving or duplicates another. Only states denser than the best so far are analysed
+// (relaxed, polished, certified), so the budget goes to billiards. The baseline it is measured
+// against, independent default runs, is the same loop with method Restarts.
+//
+// One chain per thread, chain c seeded by (seed, c): one thread and a step budget give the same
+// result every time; a wall-time budget gives the same steps in the same order, so the same
+// result whenever the same number of steps fit.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/packing.hpp"
+#include "core/progress.hpp"
+#include "core/record.hpp"
+
+namespace tripack::jobs {
+
+enum class SearchMethod {
+  BasinHopping,  // the search
+  Restarts,      // independent runs of the default billiards scene (the baseline)
+};
+std::string method_name(SearchMethod method);  // "basin-hopping", "restarts"
+
+struct SearchRequest {
+  long long n = 0;
+  double seconds = 10;  // wall-time budget of each chain (checked between steps)
+  long long steps = 0;  // > 0: also stop after this many steps per chain (reproducible budget)
+  std::uint64_t seed = 1;
+  int threads = 1;  // independent chains, one per thread
+  SearchMethod method = SearchMethod::BasinHopping;
+  // Stop a chain once a certified packing with d >= target (relative 1e-12) is found.
+  std::optional<long double> target;
+  // Packings to continue from (a database's best): they join the population before any random
+  // start. Empty: the search starts from nothing stored.
+  std::vector<Packing> starts;
+  // Stage "search": one report per step that changed the best, and one per finished chain.
+  ProgressFn progress;
+  const CancelToken* cancel = nullptr;  // set: the chains stop after their current step
+};
+
+struct SearchChain {
+  std::uint64_t seed = 0;  // the chain's index among the request's chains
+  long long steps = 0;
+  long long analyses = 0;  // states analysed (each was denser than the best so far)
+  double seconds = 0, cpu_seconds = 0;
+  std::string best_d;  // the chain's best certified d ("" if none)
+  // When the chain first held its best packing (wall and thread CPU seconds since its start).
+  double seconds_to_best = 0, cpu_seconds_to_best = 0;
+  bool target_reached = false;
+  double seconds_to_target = 0, cpu_seconds_to_target = 0;  // when target_reached
+};
+
+struct SearchResult {
+  SearchRequest request;  // what was asked (no callbacks)
+  // Distinct certified packings the chains found, ranked and labelled (core/ranking.hpp), best
+  // first; each with the chain seeds that reached it as billiards sources.
+  std::vector<PackingRecord> packings;
+  std::vector<SearchChain> chains;
+  double seconds = 0;                 // wall time of the whole search
+  double seconds_to_best = 0;         // first time any chain held the best packing (wall)
+  double cpu_seconds_to_best = 0;     // that chain's CPU seconds then
+  bool cancelled = false;
+  long long steps() const;
+};
+
+// Throws std::invalid_argument for n < 2, a budget that is not positive, threads < 1, or a start
+// that is not a packing of n disks.
+SearchResult run_search(const SearchRequest& request);
+
+}  // namespace tripack::jobs
