@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,15 +18,17 @@
 
 #include "core/io.hpp"
 #include "core/timing.hpp"
+#include "exact/certificate.hpp"
 #include "jobs/atlas.hpp"
 #include "jobs/atlas_files.hpp"
 #include "jobs/billiards_search.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/compare.hpp"
-#include "jobs/explore.hpp"
 #include "jobs/exact_atlas.hpp"
+#include "jobs/explore.hpp"
 #include "jobs/import.hpp"
 #include "jobs/ranks.hpp"
+#include "jobs/search.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
@@ -33,7 +36,6 @@
 #include "report/atlas_report.hpp"
 #include "report/diagram.hpp"
 #include "report/explore_report.hpp"
-#include "exact/certificate.hpp"
 #include "report/fields.hpp"
 #include "report/formats.hpp"
 #include "report/plot.hpp"
@@ -290,16 +292,31 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
   request.steps = o.steps;
   request.seed = o.seed;
   request.threads = o.threads;
-  if (o.method == "restarts") request.method = jobs::SearchMethod::Restarts;
+  if (o.method == "restarts")
+    request.method = jobs::SearchMethod::Restarts;
   else if (o.method != "basin-hopping")
     throw std::invalid_argument("--method must be basin-hopping or restarts, not '" + o.method +
                                 "'");
   if (!o.target.empty()) request.target = parse_positive_decimal(o.target, "--target");
   request.cancel = g.cancel;
+  // With --db: the database is opened (created) before any work, so a bad file costs nothing,
+  // and its best packings of N are the starts.
+  std::optional<store::ResultsDb> db;
+  if (!o.db.empty()) {
+    db.emplace(store::ResultsDb::open(o.db));
+    request.starts = jobs::stored_starts(*db, o.n, 3);
+  }
   report::ProgressLine progress(std::cerr, terminal_line(fmt::format("search n={}", o.n), o.out));
   request.progress = progress.callback();
   const auto result = jobs::run_search(request);
   progress.finish();
+  // Recorded before printing: what was found is kept even if printing fails.
+  if (db)
+    for (std::size_t c = 0; c < result.chains.size(); ++c)
+      if (!db->record(jobs::run_record_of(result, c, "tripack " TRIPACK_VERSION)))
+        std::cerr << fmt::format(
+            "tripack: note: {} already holds n = {} seed = {} ({}); not recorded again\n", o.db,
+            o.n, result.chains[c].seed, jobs::search_method(result.request));
   print_result(result, o.out);
   if (!result.packings.empty()) {
     const auto& best = result.packings.front();
@@ -326,7 +343,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   const Catalogue catalogue = load_catalogue(g);
   jobs::ExploreSettings settings;
   settings.max_n = o.max_n;
-  settings.runs = o.runs;
+  settings.search_steps = o.search_steps;
   settings.threads = o.threads;
   settings.seed = o.seed;
   settings.accuracy = o.accuracy;
@@ -346,10 +363,11 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
     std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
                              atlas_csv.string(), rows.size());
     const auto gaps_csv = atlas_csv.parent_path() / "atlas-gaps.csv";
-    atlas = report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
-                                 std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
-                                                                   : std::vector<jobs::AtlasGap>{},
-                                 jobs::read_exact_atlas(atlas_csv.parent_path() / "atlas-exact.csv")};
+    atlas =
+        report::ExploreAtlas{atlas_csv, std::move(rows), jobs::load_atlas(atlas_csv, 1),
+                             std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
+                                                               : std::vector<jobs::AtlasGap>{},
+                             jobs::read_exact_atlas(atlas_csv.parent_path() / "atlas-exact.csv")};
   }
   const CancelToken never;
   report::ProgressLine progress(std::cerr, job_line("explore", 0, true));
@@ -405,7 +423,8 @@ int cmd_atlas(const GlobalOptions& g, const AtlasOptions& o) {
 int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
   if (o.files.empty() == o.class_id.empty())
     throw std::invalid_argument("exact needs packing files or --class C --k A..B, not both");
-  const auto dir = o.certificates.empty() ? std::filesystem::path() : writable_directory(o.certificates);
+  const auto dir =
+      o.certificates.empty() ? std::filesystem::path() : writable_directory(o.certificates);
   pipeline::ExactSettings settings;
   settings.digits = o.digits;
   settings.max_degree = o.max_degree;
@@ -420,20 +439,22 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
     build.certify = false;
     for (long k = k_first; k <= k_last; ++k) {
       const auto built = pipeline::build_and_certify(catalogue, {o.class_id, k, o.p, ""}, build);
-      members.emplace_back(pipeline::member_name(built.pattern.provenance), built.record.pattern.packing);
+      members.emplace_back(pipeline::member_name(built.pattern.provenance),
+                           built.record.pattern.packing);
     }
   }
   pipeline::ExactRun run;
   const std::size_t count = o.files.empty() ? members.size() : o.files.size();
   for (std::size_t i = 0; i < count; ++i) {
-    run.packings.push_back(o.files.empty()
-                               ? pipeline::exact_of_packing(members[i].second, members[i].first, {}, settings)
-                               : pipeline::exact_of_file(o.files[i], settings));
+    run.packings.push_back(o.files.empty() ? pipeline::exact_of_packing(
+                                                 members[i].second, members[i].first, {}, settings)
+                                           : pipeline::exact_of_file(o.files[i], settings));
     const auto& r = run.packings.back();
     // Certificates first: what was proven is kept even if printing fails.
     if (!dir.empty() && r.configuration && r.configuration->proven) {
       std::ostringstream text;
-      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
+      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration,
+                                      r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
       report::write_file(dir / (r.label + ".gp"), text.str());
     }
   }
@@ -461,7 +482,8 @@ int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o) {
   std::map<std::string, int> proofs;
   for (const auto& r : result.done) ++proofs[r.proof];
   std::cout << fmt::format(
-      "exact atlas: {} rows, {} already done, {} done now (exact {}, existence {}, none {}) in {:.1f} s; "
+      "exact atlas: {} rows, {} already done, {} done now (exact {}, existence {}, none {}) in "
+      "{:.1f} s; "
       "table: {}\n",
       result.rows, result.skipped, result.done.size(), proofs["exact"], proofs["existence"],
       proofs["none"], result.seconds, (settings.out / "atlas-exact.csv").string());
@@ -513,6 +535,7 @@ int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o) {
   request.threads = o.threads;
   request.db = o.db;
   if (!o.scene.empty()) request.scene = load_scene(o.scene);
+  if (o.search_seconds > 0) request.search_seconds = o.search_seconds;
   request.tool_version = "tripack " TRIPACK_VERSION;
   // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a log
   // every recorded unit is one line (what a batch job, or the soak test, checks after a kill).

@@ -89,7 +89,7 @@ struct SearchOptions {
   long long steps = 0;  // 0: no step limit
   std::uint64_t seed = 1;
   int threads = 1;
-  std::string db;      // empty: start from nothing stored, record nothing
+  std::string db;  // empty: start from nothing stored, record nothing
   std::string method = "basin-hopping";
   std::string target;  // stop once this d is reached (decimal)
   OutputOptions out;
@@ -98,7 +98,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o);
 
 struct ExploreOptions {
   long long max_n = 300;
-  int runs = 50;
+  long long search_steps = 100;
   int threads = 2;
   std::uint64_t seed = 1;
   std::string out = "report";
@@ -114,19 +114,19 @@ struct ExactOptions {
   std::string class_id;
   std::string k_range;  // "A..B" or "K"
   long p = 0;
-  int digits = 300;               // D: found from D digits, confirmed from 2D
+  int digits = 300;  // D: found from D digits, confirmed from 2D
   int max_degree = 48;
-  std::string certificates;       // a directory: LABEL.gp for every proven packing
-  bool existence = true;          // --no-existence: the polynomial only
+  std::string certificates;  // a directory: LABEL.gp for every proven packing
+  bool existence = true;     // --no-existence: the polynomial only
   OutputOptions out;
 };
 int cmd_exact(const GlobalOptions& g, const ExactOptions& o);
 
 // `tripack exact-atlas` (docs/exact.md): every atlas row, resumable.
 struct ExactAtlasOptions {
-  std::string atlas;     // empty: the project's data/atlas.csv
-  std::string out;       // empty: the atlas's directory
-  std::string n_range;   // "A..B", "N" or a list; empty: every row
+  std::string atlas;    // empty: the project's data/atlas.csv
+  std::string out;      // empty: the atlas's directory
+  std::string n_range;  // "A..B", "N" or a list; empty: every row
   int digits = 300;
   int max_degree = 48;
   int threads = 2;
@@ -152,7 +152,8 @@ struct CampaignOptions {
   std::uint64_t seed = 1;
   int threads = 1;
   std::string db = "tripack.db";
-  std::string scene;  // YAML: effects and stop rule for every n
+  std::string scene;          // YAML: effects and stop rule for every n
+  double search_seconds = 0;  // > 0: search chains of this budget instead of billiards runs
   OutputOptions out;
 };
 int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o);

@@ -168,8 +168,9 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
       "compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)");
   c->add_option("--max-n", o.max_n, "class members up to this n (default 300)")
       ->check(CLI::Range(2LL, 100000LL));
-  c->add_option("--runs", o.runs, "billiards runs per n <= 60 (default 50)")
-      ->check(CLI::Range(1, 100000));
+  c->add_option("--search-steps", o.search_steps,
+                "basin-hopping steps per chain for each n <= 60 (default 100)")
+      ->check(CLI::Range(1LL, 100000000LL));
   c->add_option("--threads", o.threads, "parallel runs (default 2)")->check(CLI::Range(1, 256));
   c->add_option("--seed", o.seed, "seed of run 0 (run r uses seed + r)");
   c->add_option("--out", o.out, "report directory (default ./report)");
@@ -194,6 +195,10 @@ Action add_campaign(CLI::App& cli, const GlobalOptions& g, CampaignOptions& o) {
       ->check(CLI::Range(0, 256));
   c->add_option("--db", o.db, "results database (default tripack.db)");
   c->add_option("--scene", o.scene, "scene YAML (effects, stop rule) for every n");
+  c->add_option("--search-seconds", o.search_seconds,
+                "every unit is a search chain of this many seconds from random starts (method "
+                "'search S s'), not one billiards run")
+      ->check(CLI::Range(1e-3, 1e7));
   add_output_flags(c, o.out, true);
   return [c, &g, &o] { return *c ? cmd_campaign(g, o) : -1; };
 }
@@ -326,14 +331,16 @@ Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions&
       "'exact' on every atlas row: DIR/atlas-exact.csv and DIR/exact/LABEL.gp, resumable (a rerun "
       "skips the rows already in the table)");
   c->add_option("--atlas", o.atlas, "the atlas table (default: the project's data/atlas.csv)");
-  c->add_option("--out", o.out, "where atlas-exact.csv and exact/ go (default: the atlas's directory)");
+  c->add_option("--out", o.out,
+                "where atlas-exact.csv and exact/ go (default: the atlas's directory)");
   c->add_option("--n", o.n_range, "only these n: A..B, N or a comma-separated list of them");
   c->add_option("--digits", o.digits, "D (default 300)")->check(CLI::Range(40, 20000));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));
   c->add_option("--threads", o.threads, "rows at once (default 2)")->check(CLI::Range(1, 256));
-  c->add_flag("--retry-none", o.retry_none,
-              "run the rows whose proof is 'none' again (with more --digits, a larger --max-degree)");
+  c->add_flag(
+      "--retry-none", o.retry_none,
+      "run the rows whose proof is 'none' again (with more --digits, a larger --max-degree)");
   return [c, &g, &o] { return *c ? cmd_exact_atlas(g, o) : -1; };
 }
 

@@ -12,6 +12,7 @@
 #include "core/precision.hpp"
 #include "core/timing.hpp"
 #include "jobs/ranks.hpp"
+#include "jobs/search.hpp"
 #include "jobs/work_unit.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
@@ -20,9 +21,34 @@ namespace tripack::jobs {
 
 namespace {
 
+SearchRequest search_of(const CampaignRequest& request, long long n, std::uint64_t seed) {
+  SearchRequest search;
+  search.n = n;
+  search.seed = seed;
+  search.seconds = request.search_seconds.value_or(1);
+  return search;
+}
+
+// A search unit: one chain from random starts, recorded with its best certified packing.
+store::RunRecord search_unit(const CampaignRequest& request, const WorkUnit& unit) {
+  const SearchRequest search = search_of(request, unit.n, unit.seed);
+  try {
+    return run_record_of(run_search(search), 0, request.tool_version);
+  } catch (const std::exception& e) {
+    store::RunRecord record;
+    record.n = unit.n;
+    record.seed = unit.seed;
+    record.method = search_method(search);
+    record.tool_version = request.tool_version;
+    record.outcome = std::string("error: ") + e.what();
+    return record;
+  }
+}
+
 // One unit: a billiards run from the seeded random start, then the analysis; certified end
 // states carry their packing.
 store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit) {
+  if (request.search_seconds) return search_unit(request, unit);
   store::RunRecord record;
   record.n = unit.n;
   record.seed = unit.seed;
@@ -55,6 +81,10 @@ void check(const CampaignRequest& request, int ranks) {
   if (request.threads < (ranks > 1 ? 0 : 1))
     throw std::invalid_argument(ranks > 1 ? "--threads must be at least 0 under mpirun"
                                           : "--threads must be at least 1");
+  if (request.search_seconds && !(*request.search_seconds > 0))
+    throw std::invalid_argument("--search-seconds must be positive");
+  if (request.search_seconds && request.scene)
+    throw std::invalid_argument("a search campaign has no scene (--scene is for billiards runs)");
   if (request.scene && !request.scene->points.empty())
     throw std::invalid_argument("a campaign scene cannot have initial points (n varies)");
 }
@@ -102,8 +132,10 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
     throw;
   }
   std::vector<std::size_t> pending;
+  const std::string method =
+      request.search_seconds ? search_method(search_of(request, 0, 0)) : store::RunRecord{}.method;
   for (std::size_t i = 0; i < units.size(); ++i)
-    if (!db->has_run(units[i].n, units[i].seed)) pending.push_back(i);
+    if (!db->has_run(units[i].n, units[i].seed, method)) pending.push_back(i);
   result.units = static_cast<long long>(units.size());
   result.skipped = result.units - static_cast<long long>(pending.size());
   ProgressCounter counter("campaign", static_cast<long long>(pending.size()));

@@ -23,6 +23,9 @@ struct CampaignRequest {
   int threads = 1;  // under mpirun: rank 0's own worker threads (0: it only hands out and writes)
   std::string db;   // the results database file
   std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
+  // Set: every unit is a search chain (jobs/search.hpp) of this many seconds from random starts
+  // instead of one billiards run; its method is "search S s".
+  std::optional<double> search_seconds;
   std::string tool_version;
 };
 

@@ -12,6 +12,7 @@
 #include "core/conventions.hpp"
 #include "core/timing.hpp"
 #include "jobs/runner.hpp"
+#include "jobs/search.hpp"
 #include "pipeline/catalogue_checks.hpp"
 
 namespace tripack::jobs {
@@ -28,6 +29,11 @@ double build_cost(long long n) {
 double search_cost(long long n, int runs, int threads, double rate) {
   const double per_run = 1.5e-3 * static_cast<double>(n) * std::pow(0.01 / rate, 0.75);
   return per_run * runs / std::max(1, threads);
+}
+// A basin-hopping step (a regrow from a shrunk or moved state, analyses of improvements): about
+// 2.5e-4 n s (n = 26: 6 ms, 53: 12 ms); the chains run side by side.
+double hopping_cost(long long n, long long steps) {
+  return 2.5e-4 * static_cast<double>(n) * static_cast<double>(steps);
 }
 
 // The accuracy study with its hard cases: ~20 s on 2 cores (measured with the default settings).
@@ -73,9 +79,9 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   for (long long n : plan.searches) {
     const Scene scene = default_scene(static_cast<int>(n));
     const double rate = scene.growth ? scene.growth->rate : 0.01;
-    plan.cost +=
-        search_cost(n, n > s.billiards_max_n && n > s.class_billiards_max_n ? s.large_runs : s.runs,
-                    s.threads, rate);
+    plan.cost += n > s.billiards_max_n && n > s.class_billiards_max_n
+                     ? search_cost(n, s.large_runs, s.threads, rate)
+                     : hopping_cost(n, s.search_steps);
   }
   return plan;
 }
@@ -107,15 +113,17 @@ std::map<long long, const PackingRecord*> best_builder_by_n(
   return best;
 }
 
-void compare_with_builders(ExploreResult& result, long long n, const BilliardsSearchResult& found) {
-  if (found.packings.empty()) return;
+// `found`: a search's distinct packings of n, ranked.
+void compare_with_builders(ExploreResult& result, long long n,
+                           const std::vector<PackingRecord>& found) {
+  if (found.empty()) return;
   // Every builder row of this n learns its billiards label when the search found it.
   for (auto& row : result.packings) {
     if (!row.from_builder() || row.n() != n) continue;
-    for (std::size_t i = 0; i < found.packings.size(); ++i)
-      if (same_packing(row, found.packings[i])) {
+    for (std::size_t i = 0; i < found.size(); ++i)
+      if (same_packing(row, found[i])) {
         row.rank = i + 1;
-        row.label = found.packings[i].label;
+        row.label = found[i].label;
         break;
       }
   }
@@ -123,7 +131,7 @@ void compare_with_builders(ExploreResult& result, long long n, const BilliardsSe
   const auto it = best.find(n);
   if (it == best.end()) return;
   const PackingRecord& b = *it->second;
-  const PackingRecord& x = found.packings.front();
+  const PackingRecord& x = found.front();
   const Comparison c = compare_packings(b.pattern, x.pattern);
   ExploreComparison row;
   row.n = n;
@@ -252,13 +260,35 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   }
   if (!cancel.cancelled()) result.stages_done.push_back("build");
 
-  // Searches one n at a time, each on the runner's threads.
+  // Searches one n at a time, each on the runner's threads: basin hopping (one chain per
+  // thread) up to the small-n limits, billiards runs for the stress set.
   for (long long n : plan.searches) {
     if (cancel.cancelled()) break;
     const bool large = n > settings.billiards_max_n && n > settings.class_billiards_max_n;
+    if (!large) {
+      SearchRequest search;
+      search.n = n;
+      search.steps = settings.search_steps;
+      search.seconds = 3600;  // the step budget decides; this only bounds a pathological step
+      search.seed = settings.seed;
+      search.threads = settings.threads;
+      search.cancel = &cancel;
+      const std::string item = fmt::format("n = {}, {} steps", n, settings.search_steps);
+      report("search", item);
+      try {
+        const SearchResult found = run_search(search);
+        for (const auto& x : found.packings)
+          result.packings.push_back(packing_of_search(x, found.seconds));
+        compare_with_builders(result, n, found.packings);
+      } catch (const std::exception& e) {
+        result.errors.push_back(fmt::format("search n = {}: {}", n, e.what()));
+      }
+      report("search", item, hopping_cost(n, settings.search_steps));
+      continue;
+    }
     BilliardsSearch search;
     search.scene = default_scene(static_cast<int>(n));
-    search.runs = large ? settings.large_runs : settings.runs;
+    search.runs = settings.large_runs;
     search.seed = settings.seed;
     search.threads = settings.threads;
     search.cancel = &cancel;
@@ -271,7 +301,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       const double seconds = seconds_since(t0);
       for (std::size_t i = 0; i < found.packings.size(); ++i)
         result.packings.push_back(packing_of_search(found.packings[i], seconds));
-      compare_with_builders(result, n, found);
+      compare_with_builders(result, n, found.packings);
     } catch (const std::exception& e) {
       result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
     }

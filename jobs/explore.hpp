@@ -25,7 +25,11 @@ struct ExploreSettings {
   std::vector<long long> stress_set{254, 255, 256, 258, 260};  // matrix stress set, when <= max_n
   // A few large class members, built and certified (4Delta(22): n = 1012; Delta(40): n = 820).
   std::vector<BuildRequest> large_terms{{"four-delta", 22, 0, ""}, {"hexagonal", 40, 0, ""}};
-  int runs = 50;       // billiards runs per n up to billiards_max_n and class members <= 60
+  // The search (jobs/search.hpp) per n up to billiards_max_n and class members <= 60: one chain
+  // per thread, each this many steps (a step budget, so the report does not depend on the
+  // machine's speed). 100 steps on 2 threads from seed 1 reach the paper's best at every
+  // n = 16..34 (docs/search.md).
+  long long search_steps = 100;
   int large_runs = 8;  // per n of the stress set (slower growth: ~1 s a run at n = 254)
   int threads = 2;
   std::uint64_t seed = 1;

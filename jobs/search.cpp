@@ -36,8 +36,8 @@ struct HoppingSettings {
   double relocate_probability = 0.3;            // else shrink and regrow
   double growth_rate = kDefaultGrowthRate;      // of every regrow and random start
   double trial_gap = 1e-10;                     // billiards stop: estimated relative gap
-  int stale_limit = 12;  // steps without improving before a member restarts from random
-  double same_d = 1e-9;  // relative: two billiards d this close count as one packing here
+  int stale_limit = 12;       // steps without improving before a member restarts from random
+  double same_d = 1e-9;       // relative: two billiards d this close count as one packing here
   double duplicate_d = 1e-9;  // two members this close: the one not holding the best restarts
 };
 
@@ -133,7 +133,7 @@ class Chain {
     Member& member = members_[i];
     std::uniform_real_distribution<double> u01(0, 1);
     const Packing trial = u01(rng_) < settings_.relocate_probability ? relocate(member.packing)
-                                                                      : shrink(member.packing);
+                                                                     : shrink(member.packing);
     consider(trial);
     if (trial.d >= member.packing.d * (1 - settings_.same_d)) {
       member.stale = trial.d > member.packing.d * (1 + settings_.same_d) ? 0 : member.stale + 1;
@@ -142,8 +142,10 @@ class Chain {
       ++member.stale;
     }
     if (member.stale > settings_.stale_limit || duplicates_another(i)) {
-      if (!holds_best(i)) member = Member{random_start(), 0};
-      else member.stale = 0;
+      if (!holds_best(i))
+        member = Member{random_start(), 0};
+      else
+        member.stale = 0;
     }
   }
 
@@ -240,6 +242,7 @@ class Chain {
     records_.push_back(record);
     if (final_member || d <= best_d_ * (1 + kTargetTolerance)) return;
     best_d_ = d;
+    summary_.best = record;
     summary_.best_d = record.d.str(kLongDoubleDigits);
     summary_.seconds_to_best = seconds_since(start_);
     summary_.cpu_seconds_to_best = thread_cpu_seconds() - cpu_start_;
@@ -251,8 +254,8 @@ class Chain {
     if (progress_) {
       Progress report;
       report.stage = "search";
-      report.item = fmt::format("chain {} step {}: d = {}", summary_.seed, summary_.steps,
-                                summary_.best_d);
+      report.item =
+          fmt::format("chain {} step {}: d = {}", summary_.seed, summary_.steps, summary_.best_d);
       report.elapsed = summary_.seconds_to_best;
       report.fraction = std::min(1.0, report.elapsed / request_.seconds);
       report.d = d;
@@ -286,6 +289,38 @@ void check(const SearchRequest& request) {
 }
 
 }  // namespace
+
+std::string search_method(const SearchRequest& request) {
+  return fmt::format("search {:g} s{}", request.seconds,
+                     request.starts.empty() ? "" : ", continued");
+}
+
+store::RunRecord run_record_of(const SearchResult& result, std::size_t chain,
+                               const std::string& tool_version) {
+  const SearchChain& c = result.chains.at(chain);
+  store::RunRecord run;
+  run.n = result.request.n;
+  run.seed = c.seed;
+  run.method = search_method(result.request);
+  run.events = c.steps;
+  run.seconds = c.seconds;
+  run.tool_version = tool_version;
+  run.outcome = c.best ? "certified" : "no certified packing";
+  if (c.best) run.packing = store::stored_of(*c.best, tool_version);
+  return run;
+}
+
+std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count) {
+  std::vector<Packing> starts;
+  for (const store::StoredPacking& stored : db.packings(n)) {
+    if (starts.size() == count) break;
+    Packing p;
+    p.d = std::stold(stored.d);
+    p.points = stored.points;
+    starts.push_back(std::move(p));
+  }
+  return starts;
+}
 
 SearchResult run_search(const SearchRequest& request) {
   check(request);

@@ -19,6 +19,7 @@
 #include "core/packing.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
+#include "store/results_db.hpp"
 
 namespace tripack::jobs {
 
@@ -55,6 +56,7 @@ struct SearchChain {
   double seconds_to_best = 0, cpu_seconds_to_best = 0;
   bool target_reached = false;
   double seconds_to_target = 0, cpu_seconds_to_target = 0;  // when target_reached
+  std::optional<PackingRecord> best;                        // the chain's best certified packing
 };
 
 struct SearchResult {
@@ -63,12 +65,21 @@ struct SearchResult {
   // first; each with the chain seeds that reached it as billiards sources.
   std::vector<PackingRecord> packings;
   std::vector<SearchChain> chains;
-  double seconds = 0;                 // wall time of the whole search
-  double seconds_to_best = 0;         // first time any chain held the best packing (wall)
-  double cpu_seconds_to_best = 0;     // that chain's CPU seconds then
+  double seconds = 0;              // wall time of the whole search
+  double seconds_to_best = 0;      // first time any chain held the best packing (wall)
+  double cpu_seconds_to_best = 0;  // that chain's CPU seconds then
   bool cancelled = false;
   long long steps() const;
 };
+
+// A search chain as a campaign database unit (n, seed, method): method "search S s" (S the
+// budget), "search S s, continued" when it started from stored packings; its best certified
+// packing; steps as events.
+std::string search_method(const SearchRequest& request);
+store::RunRecord run_record_of(const SearchResult& result, std::size_t chain,
+                               const std::string& tool_version);
+// The best `count` stored packings of n as search starts (largest d first).
+std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count);
 
 // Throws std::invalid_argument for n < 2, a budget that is not positive, threads < 1, or a start
 // that is not a packing of n disks.

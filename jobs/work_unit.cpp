@@ -49,7 +49,8 @@ store::StoredPacking decode_packing(const nlohmann::json& j) {
 
 std::string encode_run(const store::RunRecord& run) {
   nlohmann::json j = {
-      {"n", run.n},           {"seed", run.seed},       {"outcome", run.outcome},
+      {"n", run.n},           {"seed", run.seed},       {"method", run.method},
+      {"outcome", run.outcome},
       {"events", run.events}, {"seconds", run.seconds}, {"tool_version", run.tool_version}};
   if (run.packing) j["packing"] = encode_packing(*run.packing);
   // Outcomes carry exception texts: never let a stray byte make the dump throw.
@@ -62,6 +63,7 @@ store::RunRecord decode_run(const std::string& text) {
     store::RunRecord run;
     run.n = j.at("n").get<long long>();
     run.seed = j.at("seed").get<std::uint64_t>();
+    run.method = j.at("method").get<std::string>();
     run.outcome = j.at("outcome").get<std::string>();
     run.events = j.at("events").get<long long>();
     run.seconds = j.at("seconds").get<double>();

@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
-#include "jobs/atlas_files.hpp"
 #include "core/io.hpp"
+#include "jobs/atlas_files.hpp"
 #include "report/fields.hpp"
 #include "report/render.hpp"
 

@@ -46,7 +46,9 @@ std::string first_seed_text(const PackingRecord& p) {
 }
 
 // The database's origin of a packing: "import" (a file) or "campaign" (a run found it first).
-std::string origin_of(const PackingRecord& p) { return p.origin() == "import" ? "import" : "campaign"; }
+std::string origin_of(const PackingRecord& p) {
+  return p.origin() == "import" ? "import" : "campaign";
+}
 
 // The imported file's name ("" for a campaign's packing).
 std::string import_name(const PackingRecord& p) {
@@ -109,10 +111,10 @@ void best_csv(std::ostream& out, const jobs::BestTable& t) {
   row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
             "origin", "source", "graph_hash"});
   for (const auto& p : t.rows)
-    row(out, {integer(p.n()), integer(p.rank), p.label, p.d.str(kLongDoubleDigits),
-              integer(p.bonds()), integer(p.rattlers()), flag(p.certified), integer(p.runs()),
-              p.has_seed() ? integer(p.first_seed()) : "", origin_of(p), import_name(p),
-              p.graph_hash});
+    row(out,
+        {integer(p.n()), integer(p.rank), p.label, p.d.str(kLongDoubleDigits), integer(p.bonds()),
+         integer(p.rattlers()), flag(p.certified), integer(p.runs()),
+         p.has_seed() ? integer(p.first_seed()) : "", origin_of(p), import_name(p), p.graph_hash});
 }
 
 }  // namespace

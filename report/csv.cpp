@@ -55,8 +55,8 @@ void packing_rows(std::ostream& out, const BilliardsSearchResult& r) {
     const auto& x = r.packings[i];
     const long double d = x.pattern.packing.d;
     row(out, {integer(r.scene.n), integer(i + 1), x.label, num(d), num(1 / d),
-              num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds()),
-              integer(x.rattlers()), flag(x.certified), integer(x.runs()), integer(x.first_seed())});
+              num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds()), integer(x.rattlers()),
+              flag(x.certified), integer(x.runs()), integer(x.first_seed())});
   }
 }
 
@@ -131,10 +131,10 @@ void render_csv(std::ostream& out, const SearchResult& r, const RenderOptions&) 
   row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "chains",
             "first_seed"});
   for (const auto& x : r.packings)
-    row(out, {integer(r.request.n), integer(x.rank), x.label, x.d.str(kLongDoubleDigits),
-              x.L.str(kLongDoubleDigits), num(oler_delta(r.request.n, x.L.value())),
-              integer(x.bonds()), integer(x.rattlers()), flag(x.certified), integer(x.runs()),
-              integer(x.first_seed())});
+    row(out,
+        {integer(r.request.n), integer(x.rank), x.label, x.d.str(kLongDoubleDigits),
+         x.L.str(kLongDoubleDigits), num(oler_delta(r.request.n, x.L.value())), integer(x.bonds()),
+         integer(x.rattlers()), flag(x.certified), integer(x.runs()), integer(x.first_seed())});
 }
 
 void render_csv(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions&) {

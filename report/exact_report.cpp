@@ -28,24 +28,27 @@ void render_text(std::ostream& out, const pipeline::ExactRun& run, const RenderO
     const auto& p = r.polynomial;
     if (p.found) {
       out << fmt::format("  P = {}\n", p.polynomial.pari("x"));
-      out << fmt::format("  degree {}, coefficients up to {} digits; irreducible over Q; found from {} digits, "
-                         "confirmed from {}\n",
-                         p.polynomial.degree(), p.polynomial.height_digits(), p.digits, p.confirmed_digits);
+      out << fmt::format(
+          "  degree {}, coefficients up to {} digits; irreducible over Q; found from {} digits, "
+          "confirmed from {}\n",
+          p.polynomial.degree(), p.polynomial.height_digits(), p.digits, p.confirmed_digits);
       out << fmt::format("  d is its only root in [{}, {}]\n", p.root.low, p.root.high);
       out << fmt::format("  d = {}\n", r.d.substr(0, 62));
     }
     if (r.configuration && r.configuration->proven)
-      out << fmt::format("  statement (I): the exact configuration exists in a field of degree {}; "
-                         "given points within {:.1g}; smallest non-bond margin {:.3g} d\n",
-                         r.configuration->field.degree(), r.configuration->largest_offset,
-                         r.configuration->smallest_margin);
+      out << fmt::format(
+          "  statement (I): the exact configuration exists in a field of degree {}; "
+          "given points within {:.1g}; smallest non-bond margin {:.3g} d\n",
+          r.configuration->field.degree(), r.configuration->largest_offset,
+          r.configuration->smallest_margin);
     if (r.optimality && r.optimality->proven)
-      out << fmt::format("  statement (II): G has full rank {} over K; a strictly positive exact stress "
-                         "({} self-stresses; smallest/largest force {:.3g}): a strict local optimum\n",
-                         r.optimality->rank, r.optimality->stresses, r.optimality->smallest_stress_ratio);
+      out << fmt::format(
+          "  statement (II): G has full rank {} over K; a strictly positive exact stress "
+          "({} self-stresses; smallest/largest force {:.3g}): a strict local optimum\n",
+          r.optimality->rank, r.optimality->stresses, r.optimality->smallest_stress_ratio);
     if (!r.reason.empty()) out << "  " << r.reason << "\n";
-    out << fmt::format("  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f})\n", seconds_of(r),
-                       r.seconds_polish, r.seconds_polynomial, r.seconds_existence);
+    out << fmt::format("  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f})\n",
+                       seconds_of(r), r.seconds_polish, r.seconds_polynomial, r.seconds_existence);
   }
 }
 

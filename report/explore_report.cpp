@@ -35,10 +35,10 @@ std::string packings_csv(const ExploreResult& result) {
     out << fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{}\n", r.n(), r.rank, csv_field(r.label),
         class_of(r), r.pattern.provenance.p ? std::to_string(r.pattern.provenance.p) : "",
-        r.pattern.provenance.class_id.empty() ? "" : std::to_string(r.pattern.provenance.k), csv_field(r.pattern.provenance.variant),
-        decimal17(d), decimal17(1 / d), decimal17(oler_delta(r.n(), 1 / d)), r.pattern.bonds.size(),
-        r.pattern.rattlers.size(), r.certified ? "true" : "false", r.origin(), r.seconds,
-        packing_file_name(r));
+        r.pattern.provenance.class_id.empty() ? "" : std::to_string(r.pattern.provenance.k),
+        csv_field(r.pattern.provenance.variant), decimal17(d), decimal17(1 / d),
+        decimal17(oler_delta(r.n(), 1 / d)), r.pattern.bonds.size(), r.pattern.rattlers.size(),
+        r.certified ? "true" : "false", r.origin(), r.seconds, packing_file_name(r));
   }
   return out.str();
 }
@@ -51,12 +51,16 @@ std::string packings_json(const ExploreResult& result) {
         {{"n", r.n()},
          {"rank", r.rank},
          {"label", r.label},
-         {"class",
-          r.pattern.provenance.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.class_id)},
-         {"p", r.pattern.provenance.p ? nlohmann::json(r.pattern.provenance.p) : nlohmann::json(nullptr)},
-         {"k", r.pattern.provenance.class_id.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.k)},
-         {"variant",
-          r.pattern.provenance.variant.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.pattern.provenance.variant)},
+         {"class", r.pattern.provenance.class_id.empty()
+                       ? nlohmann::json(nullptr)
+                       : nlohmann::json(r.pattern.provenance.class_id)},
+         {"p", r.pattern.provenance.p ? nlohmann::json(r.pattern.provenance.p)
+                                      : nlohmann::json(nullptr)},
+         {"k", r.pattern.provenance.class_id.empty() ? nlohmann::json(nullptr)
+                                                     : nlohmann::json(r.pattern.provenance.k)},
+         {"variant", r.pattern.provenance.variant.empty()
+                         ? nlohmann::json(nullptr)
+                         : nlohmann::json(r.pattern.provenance.variant)},
          {"d", decimal17(d)},
          {"L", decimal17(1 / d)},
          {"delta", decimal17(oler_delta(r.n(), 1 / d))},
@@ -113,12 +117,16 @@ std::vector<DeltaPoint> delta_points(const ExploreResult& result, const ExploreA
   }
   for (const auto& r : result.packings) {
     if (!r.from_builder() ||
-        !seen.insert({r.pattern.provenance.class_id + std::to_string(r.pattern.provenance.p), r.n()}).second)
+        !seen.insert(
+                 {r.pattern.provenance.class_id + std::to_string(r.pattern.provenance.p), r.n()})
+             .second)
       continue;
     const double delta = static_cast<double>(oler_delta(r.n(), 1 / r.pattern.packing.d));
     // The matrix class is two-parametric: one line per row p (GL1995: rows are tight).
     const std::string line =
-        r.pattern.provenance.p ? fmt::format("{} p={}", r.pattern.provenance.class_id, r.pattern.provenance.p) : r.pattern.provenance.class_id;
+        r.pattern.provenance.p
+            ? fmt::format("{} p={}", r.pattern.provenance.class_id, r.pattern.provenance.p)
+            : r.pattern.provenance.class_id;
     points.push_back({r.n(), delta, line, r.proven_optimal, false});
   }
   for (const auto& [n, r] : billiards_best) {
@@ -216,7 +224,8 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
   std::map<long long, const PackingRecord*> best_builder;
   for (const auto& r : result.packings)
     if (r.from_builder() && r.certified &&
-        (!best_builder.count(r.n()) || r.pattern.packing.d > best_builder[r.n()]->pattern.packing.d))
+        (!best_builder.count(r.n()) ||
+         r.pattern.packing.d > best_builder[r.n()]->pattern.packing.d))
       best_builder[r.n()] = &r;
   long long first = 0, last = 0;
   std::size_t count = 0;
@@ -251,10 +260,14 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
   }
   h << "</table>\n<h3>Best of every n</h3>\n";
   if (!atlas.exact.empty())
-    h << "<p>Exact d(n) (docs/exact.md, <a href=\"atlas/atlas-exact.csv\">atlas-exact.csv</a>): the "
-         "degree of d's minimal polynomial P and the proof: <em>exact</em> (the exact configuration "
-         "exists and is a strict local optimum), <em>existence</em> (it exists), <em>none</em>; each "
-         "proof links to its certificate, which checker/check_exact.sh re-checks with PARI/GP.</p>\n";
+    h << "<p>Exact d(n) (docs/exact.md, <a href=\"atlas/atlas-exact.csv\">atlas-exact.csv</a>): "
+         "the "
+         "degree of d's minimal polynomial P and the proof: <em>exact</em> (the exact "
+         "configuration "
+         "exists and is a strict local optimum), <em>existence</em> (it exists), <em>none</em>; "
+         "each "
+         "proof links to its certificate, which checker/check_exact.sh re-checks with "
+         "PARI/GP.</p>\n";
   h << "<table><tr><th>n</th><th>label</th><th>d (30 digits)</th><th>&delta;</th><th>bonds</th>"
        "<th>rattlers</th><th>source</th>"
     << (atlas.exact.empty() ? "" : "<th>deg P</th><th>proof</th>") << "<th>files</th></tr>\n";
@@ -268,9 +281,10 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
         exact_cells = fmt::format("<td>{}</td><td title=\"{}\">none</td>", it->second.degree,
                                   html_escape(it->second.reason));
       else
-        exact_cells = fmt::format("<td title=\"{}\">{}</td><td><a href=\"atlas/exact/{}.gp\">{}</a></td>",
-                                  html_escape(it->second.polynomial), it->second.degree,
-                                  html_escape(e.label), it->second.proof);
+        exact_cells =
+            fmt::format("<td title=\"{}\">{}</td><td><a href=\"atlas/exact/{}.gp\">{}</a></td>",
+                        html_escape(it->second.polynomial), it->second.degree, html_escape(e.label),
+                        it->second.proof);
     }
     h << fmt::format(
         "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
@@ -327,10 +341,11 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
          "what finished (stages done: "
       << html_escape(fmt::format("{}", fmt::join(result.stages_done, ", "))) << ").</p>\n";
   h << fmt::format(
-      "<p>max n {}, billiards for n &le; {} and class members &le; {}, {} runs per n (stress set: "
-      "{} runs), seed {}; {} packings, {} comparisons; {:.1f} s.</p>\n",
+      "<p>max n {}, search for n &le; {} and class members &le; {} ({} basin-hopping steps per "
+      "chain, one chain per thread; stress set: {} billiards runs), seed {}; {} packings, {} "
+      "comparisons; {:.1f} s.</p>\n",
       result.settings.max_n, result.settings.billiards_max_n, result.settings.class_billiards_max_n,
-      result.settings.runs, result.settings.large_runs, result.settings.seed,
+      result.settings.search_steps, result.settings.large_runs, result.settings.seed,
       result.packings.size(), result.comparisons.size(), result.seconds);
   for (const auto& e : result.errors) h << "<p class=\"warn\">" << html_escape(e) << "</p>\n";
   h << "<h2>&delta;(n) = L(n) &minus; t(n)</h2>\n<p><img src=\"delta.svg\" alt=\"delta(n) plot\" "
@@ -416,12 +431,13 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
 }  // namespace
 
 std::string packing_file_name(const PackingRecord& row) {
-  const std::string name = row.from_builder()
-                               ? fmt::format("n{:04d}-{}", row.n(), row.pattern.provenance.class_id) +
-                                     fmt::format("-k{}", row.pattern.provenance.k) +
-                                     (row.pattern.provenance.p ? fmt::format("-p{}", row.pattern.provenance.p) : "") +
-                                     (row.pattern.provenance.variant.empty() ? "" : "-" + row.pattern.provenance.variant)
-                               : fmt::format("n{:04d}-{}", row.n(), row.label);
+  const std::string name =
+      row.from_builder()
+          ? fmt::format("n{:04d}-{}", row.n(), row.pattern.provenance.class_id) +
+                fmt::format("-k{}", row.pattern.provenance.k) +
+                (row.pattern.provenance.p ? fmt::format("-p{}", row.pattern.provenance.p) : "") +
+                (row.pattern.provenance.variant.empty() ? "" : "-" + row.pattern.provenance.variant)
+          : fmt::format("n{:04d}-{}", row.n(), row.label);
   return "packings/" + name + ".txt";
 }
 

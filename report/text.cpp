@@ -306,25 +306,25 @@ void render_text(std::ostream& out, const BilliardsSearchResult& r, const Render
 
 void render_text(std::ostream& out, const SearchResult& r, const RenderOptions&) {
   out << fmt::format("search n = {} ({}, seed {}, {} chain{}): {} steps in {:.2f} s{}\n",
-                     r.request.n, method_name(r.request.method), r.request.seed,
-                     r.request.threads, r.request.threads == 1 ? "" : "s", r.steps(), r.seconds,
+                     r.request.n, method_name(r.request.method), r.request.seed, r.request.threads,
+                     r.request.threads == 1 ? "" : "s", r.steps(), r.seconds,
                      r.cancelled ? " (interrupted)" : "");
   if (r.packings.empty()) {
     out << "no certified packing found\n";
     return;
   }
   const auto& best = r.packings.front();
-  out << fmt::format("best: {} d = {}  bonds {}  rattlers {}  {}; first reached after {:.3f} s "
-                     "({:.3f} CPU s)\n",
-                     best.label, best.d.str(kLongDoubleDigits), best.bonds(), best.rattlers(),
-                     best.certified ? "certified" : "NOT certified", r.seconds_to_best,
-                     r.cpu_seconds_to_best);
+  out << fmt::format(
+      "best: {} d = {}  bonds {}  rattlers {}  {}; first reached after {:.3f} s "
+      "({:.3f} CPU s)\n",
+      best.label, best.d.str(kLongDoubleDigits), best.bonds(), best.rattlers(),
+      best.certified ? "certified" : "NOT certified", r.seconds_to_best, r.cpu_seconds_to_best);
   if (r.request.target)
     for (const auto& c : r.chains)
-      out << fmt::format("chain {}: target {} {}\n", c.seed, format_significant(*r.request.target, 18),
-                         c.target_reached ? fmt::format("reached after {:.3f} CPU s",
-                                                        c.cpu_seconds_to_target)
-                                          : "not reached");
+      out << fmt::format(
+          "chain {}: target {} {}\n", c.seed, format_significant(*r.request.target, 18),
+          c.target_reached ? fmt::format("reached after {:.3f} CPU s", c.cpu_seconds_to_target)
+                           : "not reached");
   out << fmt::format("distinct packings ({}):\n", r.packings.size());
   for (const auto& x : r.packings)
     out << fmt::format("  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} chains)\n", x.label,

@@ -41,18 +41,26 @@ CREATE TABLE IF NOT EXISTS {}(
                      name);
 }
 
-constexpr const char* kOtherTables = R"sql(
-CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS runs(
+// The runs table of version 3 (a unit is (n, seed, method): a billiards run or a search chain),
+// under a given name (the migration builds it beside the old one).
+std::string runs_table(const char* name) {
+  return fmt::format(R"sql(
+CREATE TABLE IF NOT EXISTS {}(
   n INTEGER NOT NULL,
   seed INTEGER NOT NULL,
+  method TEXT NOT NULL DEFAULT 'billiards',
   outcome TEXT NOT NULL,
   events INTEGER NOT NULL,
   seconds REAL NOT NULL,
   packing_id INTEGER REFERENCES packings(id),
   tool_version TEXT NOT NULL,
-  PRIMARY KEY(n, seed));
-)sql";
+  PRIMARY KEY(n, seed, method));
+)sql",
+                     name);
+}
+
+constexpr const char* kMetaTable =
+    "CREATE TABLE IF NOT EXISTS meta(key TEXT PRIMARY KEY, value TEXT NOT NULL);";
 
 // Version 1 -> 2: the packings table rebuilt with origin and source columns and a nullable
 // first_seed (SQLite cannot change a column's NOT NULL in place): create the new table, copy,
@@ -67,6 +75,22 @@ DROP TABLE packings;
 ALTER TABLE packings_v2 RENAME TO packings;
 UPDATE meta SET value = '2' WHERE key = 'schema_version';
 )sql";
+
+// Version 2 -> 3: runs gained `method` (every older run is a billiards run) and the key
+// (n, seed, method), so a search chain and a billiards run of one seed are two units. The same
+// create-copy-drop-rename order as above.
+constexpr const char* kMigrate2To3 = R"sql(
+INSERT INTO runs_v3(n, seed, method, outcome, events, seconds, packing_id, tool_version)
+  SELECT n, seed, 'billiards', outcome, events, seconds, packing_id, tool_version FROM runs;
+DROP TABLE runs;
+ALTER TABLE runs_v3 RENAME TO runs;
+UPDATE meta SET value = '3' WHERE key = 'schema_version';
+)sql";
+
+// The schema versions open() migrates in place.
+bool migratable(const std::string& version) {
+  return version == "1" || version == "2";
+}
 
 // A prepared statement, finalized on scope exit.
 class Statement {
@@ -295,7 +319,8 @@ void create_whole(const std::string& path) {
   if (rc != SQLITE_OK) fail(db ? sqlite3_errmsg(db) : "out of memory");
   std::string sql = "PRAGMA journal_mode=WAL; BEGIN; ";
   sql += packings_table("packings");
-  sql += kOtherTables;
+  sql += kMetaTable;
+  sql += runs_table("runs");
   sql += fmt::format("INSERT INTO meta(key, value) VALUES ('schema_version', '{}'); COMMIT;",
                      kSchemaVersion);
   if (sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) != SQLITE_OK)
@@ -343,12 +368,12 @@ ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
   if (tables > 0 && !version)
     throw StoreError(fmt::format(
         "{} is not a tripack database (an SQLite database without tripack's tables)", path));
-  if (version && *version != std::to_string(kSchemaVersion) && *version != "1")
+  if (version && *version != std::to_string(kSchemaVersion) && !migratable(*version))
     wrong_version(path, *version);
   if (tables == 0 && !options.create)
     throw StoreError(fmt::format("{} is not a tripack database (it is empty)", path));
-  if (!version || *version == "1") {
-    // A new file, or version 1: written in one transaction, checked again inside it (another
+  if (!version || migratable(*version)) {
+    // A new file, or an older version: written in one transaction, checked again inside it (another
     // process may have created or migrated it meanwhile). WAL: readers do not block the writer,
     // and a commit survives a killed process.
     exec(db, path, "PRAGMA journal_mode=WAL");
@@ -360,12 +385,17 @@ ResultsDb ResultsDb::open(const std::string& path, const OpenOptions& options) {
           throw StoreError(fmt::format(
               "{} is not a tripack database (an SQLite database without tripack's tables)", path));
         exec(db, path, packings_table("packings").c_str());
-        exec(db, path, kOtherTables);
+        exec(db, path, kMetaTable);
+        exec(db, path, runs_table("runs").c_str());
         Statement set(db, path, "INSERT INTO meta(key, value) VALUES ('schema_version', ?1)");
         set.bind(1, std::to_string(kSchemaVersion)).step();
-      } else if (*now == "1") {
-        exec(db, path, packings_table("packings_v2").c_str());
-        exec(db, path, kMigrate1To2);
+      } else if (migratable(*now)) {
+        if (*now == "1") {
+          exec(db, path, packings_table("packings_v2").c_str());
+          exec(db, path, kMigrate1To2);
+        }
+        exec(db, path, runs_table("runs_v3").c_str());
+        exec(db, path, kMigrate2To3);
       } else if (*now != std::to_string(kSchemaVersion)) {
         wrong_version(path, *now);
       }
@@ -412,11 +442,11 @@ ResultsDb ResultsDb::open_read_only(const std::string& path, const OpenOptions& 
           fmt::format("{} is not a tripack database (read-only, without tripack's "
                       "tables)",
                       path));
-    if (*version == "1")
+    if (migratable(*version))
       throw StoreError(
-          fmt::format("database {} has schema version 1 and is read-only here: "
+          fmt::format("database {} has schema version {} and is read-only here: "
                       "open it once with write access to migrate it",
-                      path));
+                      path, *version));
     if (*version != std::to_string(kSchemaVersion)) wrong_version(path, *version);
     return out;
   }
@@ -438,13 +468,15 @@ ResultsDb::~ResultsDb() {
   sqlite3_close(db_);
 }
 
-bool ResultsDb::has_run(long long n, std::uint64_t seed) const {
-  Statement s(db_, path_, "SELECT 1 FROM runs WHERE n = ?1 AND seed = ?2");
+bool ResultsDb::has_run(long long n, std::uint64_t seed, const std::string& method) const {
+  Statement s(db_, path_, "SELECT 1 FROM runs WHERE n = ?1 AND seed = ?2 AND method = ?3");
+  s.bind(3, method);
   return s.bind(1, n).bind(2, static_cast<long long>(seed)).step();
 }
 
-std::vector<std::uint64_t> ResultsDb::finished_seeds(long long n) const {
-  Statement s(db_, path_, "SELECT seed FROM runs WHERE n = ?1 ORDER BY seed");
+std::vector<std::uint64_t> ResultsDb::finished_seeds(long long n, const std::string& method) const {
+  Statement s(db_, path_, "SELECT seed FROM runs WHERE n = ?1 AND method = ?2 ORDER BY seed");
+  s.bind(2, method);
   s.bind(1, n);
   std::vector<std::uint64_t> seeds;
   while (s.step()) seeds.push_back(static_cast<std::uint64_t>(s.integer(0)));
@@ -460,7 +492,7 @@ long long ResultsDb::run_count() const {
 bool ResultsDb::record(const RunRecord& run) {
   exec(db_, path_, "BEGIN IMMEDIATE");
   try {
-    if (has_run(run.n, run.seed)) {
+    if (has_run(run.n, run.seed, run.method)) {
       exec(db_, path_, "ROLLBACK");
       return false;
     }
@@ -499,14 +531,15 @@ bool ResultsDb::record(const RunRecord& run) {
       }
     }
     Statement add(db_, path_,
-                  "INSERT INTO runs(n, seed, outcome, events, seconds, packing_id, tool_version) "
-                  "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+                  "INSERT INTO runs(n, seed, outcome, events, seconds, packing_id, tool_version, "
+                  "method) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
     add.bind(1, run.n)
         .bind(2, static_cast<long long>(run.seed))
         .bind(3, run.outcome)
         .bind(4, run.events)
         .bind(5, run.seconds)
-        .bind(7, run.tool_version);
+        .bind(7, run.tool_version)
+        .bind(8, run.method);
     if (packing_id >= 0) add.bind(6, packing_id);  // else NULL
     add.step();
     exec(db_, path_, "COMMIT");
@@ -604,7 +637,8 @@ DbStatistics ResultsDb::statistics() const {
     st.imported = count("SELECT COUNT(*) FROM packings WHERE origin = 'import'");
     st.n_values = count("SELECT COUNT(*) FROM (SELECT n FROM runs UNION SELECT n FROM packings)");
     st.duplicate_runs = count(
-        "SELECT COALESCE(SUM(c - 1), 0) FROM (SELECT COUNT(*) AS c FROM runs GROUP BY n, seed "
+        "SELECT COALESCE(SUM(c - 1), 0) FROM (SELECT COUNT(*) AS c FROM runs GROUP BY n, seed, "
+        "method "
         "HAVING COUNT(*) > 1)");
     // d to 12 significant digits recomputed from the stored text, not the d_key column.
     st.duplicate_packings = count(
@@ -627,7 +661,8 @@ PackingRecord record_of(const StoredPacking& stored) {
   PackingRecord record = PackingRecord::of(std::move(pattern));
   record.certified = stored.certified;
   record.graph_hash = stored.graph_hash;
-  if (stored.origin == "import") record.sources.push_back({PackingSource::Kind::Import, stored.source});
+  if (stored.origin == "import")
+    record.sources.push_back({PackingSource::Kind::Import, stored.source});
   if (stored.has_seed)
     record.sources.push_back({PackingSource::Kind::Billiards, "", stored.first_seed, stored.runs});
   return record;

@@ -21,7 +21,9 @@ namespace tripack::store {
 // Version 2 (issue 11, db import): packings record where they came from (origin "campaign" or
 // "import", source = the imported file's name) and imported ones have no seed (first_seed NULL).
 // A version-1 file is migrated in place when opened (one transaction; every row kept).
-inline constexpr int kSchemaVersion = 2;
+// Version 3 (issue 21, search): a run has a method ("billiards", or "search S s" for a search
+// chain of S seconds) and a unit is (n, seed, method). Older files are migrated in place.
+inline constexpr int kSchemaVersion = 3;
 
 class StoreError : public std::runtime_error {
  public:
@@ -78,6 +80,7 @@ struct AddOutcome {
 struct RunRecord {
   long long n = 0;
   std::uint64_t seed = 0;
+  std::string method = "billiards";  // or "search S s": a search chain (jobs/search.hpp)
   std::string outcome;  // "certified", "not certified", "error: ..."
   long long events = 0;
   double seconds = 0;
@@ -105,8 +108,9 @@ class ResultsDb {
   ResultsDb& operator=(ResultsDb&&) noexcept;
   ~ResultsDb();
 
-  bool has_run(long long n, std::uint64_t seed) const;
-  std::vector<std::uint64_t> finished_seeds(long long n) const;
+  bool has_run(long long n, std::uint64_t seed, const std::string& method = "billiards") const;
+  std::vector<std::uint64_t> finished_seeds(long long n,
+                                            const std::string& method = "billiards") const;
   long long run_count() const;
   // Records the unit and its packing in one transaction; a unit already recorded is left as it
   // is (false), so a rerun never counts a unit twice.

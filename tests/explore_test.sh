@@ -20,7 +20,7 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-"$TRIPACK" explore --max-n 24 --runs 3 --out "$tmp/report" >"$tmp/out.txt" 2>"$tmp/err.txt"
+"$TRIPACK" explore --max-n 24 --search-steps 3 --out "$tmp/report" >"$tmp/out.txt" 2>"$tmp/err.txt"
 check "explore exits 0" [ $? -eq 0 ]
 for f in index.html delta.svg delta.png delta.pdf delta.csv delta.gp packings.csv packings.json compare.csv classes.csv; do
   check "report has $f" [ -s "$tmp/report/$f" ]

@@ -35,7 +35,7 @@ const jobs::ExploreResult& small_exploration() {
     s.class_billiards_max_n = 16;
     s.stress_set.clear();
     s.large_terms.clear();
-    s.runs = 6;
+    s.search_steps = 6;
     s.accuracy = false;  // tests/test_accuracy.cpp covers it
     const CancelToken cancel;
     return jobs::explore(catalogue(), s, cancel);

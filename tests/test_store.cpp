@@ -270,6 +270,7 @@ INSERT INTO runs VALUES(3, 7, 'certified', 10, 0.25, 1, 'tripack 0.1');
   sqlite3_close(raw);
 }
 
+// Versions 1 and 2 migrate in place to the current version (3: runs have a method).
 TEST(Store, MigratesAVersion1FileInPlace) {
   const std::string path = fresh_path("version1.db");
   write_version_1(path);
@@ -294,7 +295,12 @@ TEST(Store, MigratesAVersion1FileInPlace) {
   sqlite3_stmt* s = nullptr;
   sqlite3_prepare_v2(raw, "SELECT value FROM meta WHERE key = 'schema_version'", -1, &s, nullptr);
   ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
-  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)), "2");
+  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)), "3");
+  sqlite3_finalize(s);
+  // The old run became a billiards run.
+  sqlite3_prepare_v2(raw, "SELECT method FROM runs WHERE n = 3 AND seed = 7", -1, &s, nullptr);
+  ASSERT_EQ(sqlite3_step(s), SQLITE_ROW);
+  EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(s, 0)), "billiards");
   sqlite3_finalize(s);
   sqlite3_prepare_v2(raw, "PRAGMA foreign_key_check", -1, &s, nullptr);
   EXPECT_EQ(sqlite3_step(s), SQLITE_DONE);  // every run's packing_id names a packing
@@ -302,6 +308,25 @@ TEST(Store, MigratesAVersion1FileInPlace) {
   sqlite3_close(raw);
   // Opening again does nothing more.
   EXPECT_EQ(ResultsDb::open(path).run_count(), 2);
+}
+
+// A unit is (n, seed, method): a search chain of seed 7 is not the billiards run of seed 7, and
+// each is recorded once.
+TEST(Store, ASearchChainAndABilliardsRunOfOneSeedAreTwoUnits) {
+  const std::string path = fresh_path("methods.db");
+  ResultsDb db = ResultsDb::open(path);
+  EXPECT_TRUE(db.record(run(3, 7, packing(3, "0.5", "h3"))));
+  RunRecord chain = run(3, 7, packing(3, "0.5", "h3"));
+  chain.method = "search 30 s";
+  EXPECT_FALSE(db.has_run(3, 7, chain.method));
+  EXPECT_TRUE(db.record(chain));
+  EXPECT_FALSE(db.record(chain));  // recorded once
+  EXPECT_TRUE(db.has_run(3, 7, chain.method));
+  EXPECT_EQ(db.finished_seeds(3), std::vector<std::uint64_t>{7});
+  EXPECT_EQ(db.finished_seeds(3, chain.method), std::vector<std::uint64_t>{7});
+  EXPECT_EQ(db.run_count(), 2);
+  EXPECT_EQ(db.packings(3).at(0).runs, 2);  // both ended in it
+  EXPECT_EQ(db.statistics().duplicate_runs, 0);
 }
 
 TEST(Store, ImportedPackingsHaveNoSeedUntilARunFindsThem) {
