@@ -394,6 +394,33 @@ rm -rf "$rodir"
 rm -rf "$ctmp"
 rm -f "$cdb" "$cdb-wal" "$cdb-shm" "$cdb.txt"
 
+# search (issue 21): the JSON a program reads; one seed, one thread and a step budget print the
+# same packings twice; --db records each chain once as a unit (n, seed, "search S s").
+sdb=$(mktemp -u /tmp/tripack-search-XXXX.db)
+out1=$("$TRIPACK" search 12 --steps 15 --seed 4 --json 2>/dev/null)
+out2=$("$TRIPACK" search 12 --steps 15 --seed 4 --json 2>/dev/null)
+if python3 - "$out1" "$out2" <<'PY'
+import json, re, sys
+a, b = (json.loads(x) for x in sys.argv[1:3])
+best = a["best"]
+assert a["n"] == 12 and a["seconds"] > 0 and a["steps"] == 15
+assert set(["d", "label", "bonds", "rattlers", "certified", "seconds_to_best"]) <= set(best)
+assert isinstance(best["d"], str) and len(re.sub(r"[^0-9]", "", best["d"]).lstrip("0")) >= 17
+assert best["certified"] and a["packings"][0]["label"] == best["label"]
+strip = lambda j: [(p["d"], p["label"], p["bonds"]) for p in j["packings"]]
+assert strip(a) == strip(b)
+PY
+then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --json"; fi
+"$TRIPACK" search 12 --steps 3 --seed 9 --db "$sdb" >/dev/null 2>&1
+"$TRIPACK" search 12 --steps 3 --seed 9 --db "$sdb" >/dev/null 2>"$sdb.err"
+if [ "$(sqlite3 "$sdb" "SELECT COUNT(*) FROM runs WHERE n = 12 AND seed = 9 AND method = 'search 10 s'")" = 1 ] &&
+   [ "$(sqlite3 "$sdb" "SELECT COUNT(*) FROM runs WHERE method = 'search 10 s, continued'")" = 1 ]; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --db"; fi
+rm -f "$sdb" "$sdb-wal" "$sdb-shm" "$sdb.err"
+expect_error "search with an unknown method" "--method must be basin-hopping or restarts" search 12 --method anneal
+expect_error "search with a bad target" "--target must be a positive decimal" search 12 --target 0.2x
+expect_error "search of one disk" "N: Value 1 not in range" search 1
+
 # Progress (issue 10): on a terminal (script(1) gives the command a pty), a stage running over 2 s
 # shows a live line with the stage; a quick command shows none.
 if command -v script >/dev/null; then

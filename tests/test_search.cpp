@@ -1,0 +1,124 @@
+// The search (jobs/search.hpp, issue 21): reproducible on one thread with a step budget, reaches
+// proven optima, stops at a target, continues from given packings, records as campaign units.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "jobs/search.hpp"
+#include "store/results_db.hpp"
+
+namespace tripack {
+namespace {
+
+jobs::SearchRequest request(long long n, long long steps, std::uint64_t seed) {
+  jobs::SearchRequest r;
+  r.n = n;
+  r.steps = steps;
+  r.seconds = 600;  // the step budget decides
+  r.seed = seed;
+  return r;
+}
+
+// Two runs of one seed on one thread with a step budget: the same packings, digit for digit.
+TEST(Search, SameSeedOneThreadGivesTheSameResult) {
+  for (const auto method : {jobs::SearchMethod::BasinHopping, jobs::SearchMethod::Restarts}) {
+    jobs::SearchRequest r = request(23, 25, 11);
+    r.method = method;
+    const jobs::SearchResult a = jobs::run_search(r);
+    const jobs::SearchResult b = jobs::run_search(r);
+    ASSERT_FALSE(a.packings.empty());
+    ASSERT_EQ(a.packings.size(), b.packings.size());
+    for (std::size_t i = 0; i < a.packings.size(); ++i) {
+      EXPECT_EQ(a.packings[i].d.str(), b.packings[i].d.str());
+      EXPECT_EQ(a.packings[i].label, b.packings[i].label);
+      EXPECT_EQ(a.packings[i].graph_hash, b.packings[i].graph_hash);
+    }
+    EXPECT_EQ(a.steps(), 25);
+    EXPECT_EQ(a.chains.at(0).analyses, b.chains.at(0).analyses);
+  }
+}
+
+// Delta(4) = 10 disks: the optimum is the hexagonal packing, d = 1/3 (Oler's bound is attained;
+// GL1995 sec. 1). Two chains on two threads both reach it, certified, and the best says when.
+TEST(Search, ReachesTheProvenOptimumOfTen) {
+  jobs::SearchRequest r = request(10, 20, 1);
+  r.threads = 2;
+  const jobs::SearchResult result = jobs::run_search(r);
+  ASSERT_FALSE(result.packings.empty());
+  const PackingRecord& best = result.packings.front();
+  EXPECT_TRUE(best.certified);
+  EXPECT_NEAR(static_cast<double>(best.d.value()), 1.0 / 3.0, 1e-15);
+  EXPECT_EQ(best.label, "t10a");
+  ASSERT_EQ(result.chains.size(), 2u);
+  EXPECT_EQ(result.chains[0].seed, 1u);
+  EXPECT_EQ(result.chains[1].seed, 2u);
+  EXPECT_GE(result.seconds_to_best, 0);
+  EXPECT_LE(result.seconds_to_best, result.seconds);
+  for (const auto& chain : result.chains) ASSERT_TRUE(chain.best.has_value());
+}
+
+// A target stops the chain at the step that reached it: the hexagonal 15 = Delta(5), d = 1/4.
+TEST(Search, StopsOnceTheTargetIsReached) {
+  jobs::SearchRequest r = request(15, 500, 3);
+  r.target = 0.25L;
+  const jobs::SearchResult result = jobs::run_search(r);
+  const jobs::SearchChain& chain = result.chains.at(0);
+  ASSERT_TRUE(chain.target_reached);
+  EXPECT_LT(chain.steps, 500);
+  EXPECT_NEAR(static_cast<double>(std::stold(chain.best_d)), 0.25, 1e-15);
+  EXPECT_LE(chain.cpu_seconds_to_target, chain.cpu_seconds + 1e-9);
+}
+
+// Continuing from a packing: the first step analyses it, so the best is at least that good at
+// once. The start here is the hexagonal Delta(4) itself (d = 1/3).
+TEST(Search, ContinuesFromTheGivenPackings) {
+  Packing hexagonal;
+  hexagonal.d = 1.0L / 3;
+  for (int row = 0; row < 4; ++row)
+    for (int i = 0; i < 4 - row; ++i)
+      hexagonal.points.push_back({(i + row / 2.0L) / 3, row * std::sqrt(3.0L) / 6});
+  jobs::SearchRequest r = request(10, 1, 5);
+  r.starts = {hexagonal};
+  const jobs::SearchResult result = jobs::run_search(r);
+  ASSERT_FALSE(result.packings.empty());
+  EXPECT_NEAR(static_cast<double>(result.packings.front().d.value()), 1.0 / 3.0, 1e-15);
+  EXPECT_EQ(jobs::search_method(r), "search 600 s, continued");
+}
+
+TEST(Search, RefusesBadRequests) {
+  EXPECT_THROW(jobs::run_search(request(1, 5, 1)), std::invalid_argument);
+  jobs::SearchRequest r = request(10, 5, 1);
+  r.threads = 0;
+  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+  r = request(10, 5, 1);
+  r.seconds = 0;
+  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+  r = request(10, 5, 1);
+  r.starts = {Packing{{{0, 0}, {1, 0}}, 1}};
+  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+}
+
+// A chain as a database unit: (n, seed, "search S s") with its best packing; recorded once.
+TEST(Search, AChainIsACampaignUnit) {
+  const auto path = std::filesystem::temp_directory_path() / "tripack-search-unit.db";
+  std::filesystem::remove(path);
+  const jobs::SearchResult result = jobs::run_search(request(10, 4, 2));
+  const store::RunRecord run = jobs::run_record_of(result, 0, "test");
+  EXPECT_EQ(run.method, "search 600 s");
+  EXPECT_EQ(run.events, 4);
+  ASSERT_TRUE(run.packing.has_value());
+  store::ResultsDb db = store::ResultsDb::open(path.string());
+  EXPECT_TRUE(db.record(run));
+  EXPECT_FALSE(db.record(run));
+  EXPECT_TRUE(db.has_run(10, 2, "search 600 s"));
+  EXPECT_FALSE(db.has_run(10, 2));  // no billiards run of seed 2
+  const auto starts = jobs::stored_starts(db, 10, 3);
+  ASSERT_EQ(starts.size(), 1u);
+  EXPECT_NEAR(static_cast<double>(starts[0].d), 1.0 / 3.0, 1e-15);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace tripack
