@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job: install dependencies, build, then explore with the defaults: every class member up
-# to n = 300 built and certified, billiards runs for small n and the matrix stress set, compared,
-# with the atlas (data/atlas.csv) beside them, and the report written to out/report (open
+# to n = 300 built and certified, the basin-hopping search for small n (docs/search.md), billiards
+# runs for the matrix stress set, compared, with the atlas (data/atlas.csv) beside them, and the report written to out/report (open
 # out/report/index.html; not ./report, which holds the renderers' sources). Extra arguments go to
 # `tripack explore` (an --out of your own replaces out/report).
 set -euo pipefail
