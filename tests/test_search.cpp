@@ -1,10 +1,12 @@
 // The search (jobs/search.hpp, issue 21): reproducible on one thread with a step budget, reaches
 // proven optima, stops at a target, continues from given packings, records as campaign units.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include "jobs/search.hpp"
 #include "store/results_db.hpp"
@@ -102,22 +104,29 @@ TEST(Search, RefusesBadRequests) {
 
 // A chain as a database unit: (n, seed, "search S s") with its best packing; recorded once.
 TEST(Search, AChainIsACampaignUnit) {
-  const auto path = std::filesystem::temp_directory_path() / "tripack-search-unit.db";
-  std::filesystem::remove(path);
+  // A name of this process's own; the WAL and shared-memory files beside it go with it.
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("tripack-search-unit-" + std::to_string(::getpid()) + ".db");
+  const auto remove_all = [&] {
+    for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
+  };
+  remove_all();
   const jobs::SearchResult result = jobs::run_search(request(10, 4, 2));
   const store::RunRecord run = jobs::run_record_of(result, 0, "test");
   EXPECT_EQ(run.method, "search 600 s");
   EXPECT_EQ(run.events, 4);
   ASSERT_TRUE(run.packing.has_value());
-  store::ResultsDb db = store::ResultsDb::open(path.string());
-  EXPECT_TRUE(db.record(run));
-  EXPECT_FALSE(db.record(run));
-  EXPECT_TRUE(db.has_run(10, 2, "search 600 s"));
-  EXPECT_FALSE(db.has_run(10, 2));  // no billiards run of seed 2
-  const auto starts = jobs::stored_starts(db, 10, 3);
-  ASSERT_EQ(starts.size(), 1u);
-  EXPECT_NEAR(static_cast<double>(starts[0].d), 1.0 / 3.0, 1e-15);
-  std::filesystem::remove(path);
+  {
+    store::ResultsDb db = store::ResultsDb::open(path.string());
+    EXPECT_TRUE(db.record(run));
+    EXPECT_FALSE(db.record(run));
+    EXPECT_TRUE(db.has_run(10, 2, "search 600 s"));
+    EXPECT_FALSE(db.has_run(10, 2));  // no billiards run of seed 2
+    const auto starts = jobs::stored_starts(db, 10, 3);
+    ASSERT_EQ(starts.size(), 1u);
+    EXPECT_NEAR(static_cast<double>(starts[0].d), 1.0 / 3.0, 1e-15);
+  }
+  remove_all();
 }
 
 }  // namespace
