@@ -95,8 +95,7 @@ class Chain {
   }
 
   void run() {
-    const double cpu_start = thread_cpu_seconds();
-    cpu_start_ = cpu_start;
+    cpu_start_ = thread_cpu_seconds();
     for (const Packing& p : request_.starts)
       if (members_.size() < std::size_t(settings_.population)) add_member(p);
     while (!done()) {
@@ -106,7 +105,7 @@ class Chain {
     if (!summary_.target_reached && request_.method == SearchMethod::BasinHopping)
       for (const Member& m : members_) analyse(m.packing, true);
     summary_.seconds = seconds_since(start_);
-    summary_.cpu_seconds = thread_cpu_seconds() - cpu_start;
+    summary_.cpu_seconds = thread_cpu_seconds() - cpu_start_;
   }
 
   SearchChain summary() const { return summary_; }
@@ -182,10 +181,15 @@ class Chain {
 
   Packing random_start() { return run_billiards(growth_scene({}, 0), rng_).packing; }
 
-  Packing shrink(const Packing& p) {
+  // d shrunk by a relative amount drawn log-uniformly in [shrink_min, shrink_max].
+  long double shrunk_d(long double d) {
     std::uniform_real_distribution<double> u(std::log(settings_.shrink_min),
                                              std::log(settings_.shrink_max));
-    return run_billiards(growth_scene(p, p.d * (1 - std::exp(u(rng_)))), rng_).packing;
+    return d * (1 - std::exp(u(rng_)));
+  }
+
+  Packing shrink(const Packing& p) {
+    return run_billiards(growth_scene(p, shrunk_d(p.d)), rng_).packing;
   }
 
   // The loosest disk (fewest contacts; ties at random) or, half the time, any disk, moved to the
@@ -213,9 +217,7 @@ class Chain {
     }
     Packing start = p;
     start.points[moved] = hole;
-    std::uniform_real_distribution<double> u(std::log(settings_.shrink_min),
-                                             std::log(settings_.shrink_max));
-    const long double start_d = std::min(p.d * (1 - std::exp(u(rng_))), room * (1 - 1e-9L));
+    const long double start_d = std::min(shrunk_d(p.d), room * (1 - 1e-9L));
     return run_billiards(growth_scene(start, start_d), rng_).packing;
   }
 
