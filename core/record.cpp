@@ -72,6 +72,17 @@ long long PackingRecord::runs() const {
   return runs;
 }
 
+long long PackingRecord::confirmations() const {
+  long long count = 0;
+  bool builder = false;
+  for (const auto& s : sources) {
+    if (s.kind == PackingSource::Kind::Billiards) count += s.independent_runs;
+    if (s.kind == PackingSource::Kind::Table) count += s.runs;
+    builder = builder || s.kind == PackingSource::Kind::Builder;
+  }
+  return count + (builder ? 1 : 0);
+}
+
 std::string PackingRecord::source_text() const {
   // Builders first, named together ("builder A = B": one packing, two builders).
   std::string builders, others;
@@ -95,6 +106,7 @@ void PackingRecord::merge_sources(const PackingRecord& other) {
     } else {
       same->seed = std::min(same->seed, s.seed);
       same->runs += s.runs;
+      same->independent_runs += s.independent_runs;
     }
   }
 }

@@ -23,7 +23,10 @@ struct PackingSource {
   Kind kind = Kind::Billiards;
   std::string name;        // builder: its member ("matrix k=2 p=7"); import: the file's name
   std::uint64_t seed = 0;  // billiards: the smallest seed that ended in it
-  long long runs = 0;      // billiards: how many runs ended in it
+  long long runs = 0;      // billiards: how many runs ended in it; table: its confirmations
+  // Billiards: of `runs`, those that started from nothing stored (a billiards run, a search
+  // chain from random starts); a search continued from stored packings does not confirm.
+  long long independent_runs = 0;
   // "builder NAME", "billiards seed S (R runs)", "import FILE".
   std::string describe() const;
 };
@@ -69,6 +72,9 @@ struct PackingRecord {
   std::uint64_t first_seed() const;
   bool has_seed() const { return first_seed() != std::numeric_limits<std::uint64_t>::max(); }
   long long runs() const;  // billiards runs over every source
+  // The independent searches that reached it (issue 21): independent billiards runs and search
+  // chains, plus one when a builder gives it; a table's count as read back.
+  long long confirmations() const;
   bool from_builder() const {
     return !sources.empty() && sources.front().kind == PackingSource::Kind::Builder;
   }

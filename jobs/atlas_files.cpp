@@ -14,8 +14,9 @@ namespace tripack::jobs {
 
 namespace {
 
-const std::vector<std::string> kColumns{"n",     "rank",     "label",     "d",      "L",   "delta",
-                                        "bonds", "rattlers", "certified", "source", "file"};
+const std::vector<std::string> kColumns{"n",         "rank",          "label",  "d",
+                                        "L",         "delta",         "bonds",  "rattlers",
+                                        "certified", "confirmations", "source", "file"};
 
 const std::vector<std::string> kGapColumns{"class",
                                            "p",
@@ -48,6 +49,7 @@ std::vector<std::string> fields_of(const PackingRecord& r) {
           std::to_string(r.pattern.bonds.size()),
           std::to_string(r.pattern.rattlers.size()),
           r.certified ? "true" : "false",
+          std::to_string(r.confirmations()),
           r.source_text(),
           r.file};
 }
@@ -87,7 +89,6 @@ std::vector<std::string> split_csv(const std::string& line) {
   return fields;
 }
 
-
 void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   const auto files = dir / "atlas";
   std::filesystem::create_directories(files);
@@ -98,8 +99,11 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
     options.exact_d = row.d.str();
     options.exact_points = &row.precise_points;
     options.comments = {
-        "rank: " + std::to_string(row.rank), "L: " + row.L.str(), "delta: " + atlas_delta(row),
+        "rank: " + std::to_string(row.rank),
+        "L: " + row.L.str(),
+        "delta: " + atlas_delta(row),
         "source: " + row.source_text(),
+        "confirmations: " + std::to_string(row.confirmations()),
         std::string("certified: ") + (row.certified ? "yes" : "no") + " (" + row.verdict + ")"};
     if (!row.pattern.rattlers.empty())
       options.comments.push_back(
@@ -115,10 +119,11 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
       std::filesystem::remove(entry.path());
   std::string gaps = csv_line(kGapColumns);
   for (const auto& g : atlas.gaps)
-    gaps += csv_line({g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k),
-                      std::to_string(g.n), g.label_n, g.label_next, format_significant(g.L_n, kLongDoubleDigits),
-                      format_significant(g.L_next, kLongDoubleDigits), format_significant(g.L_next - g.L_n, 15),
-                      format_significant(g.delta_difference, 15), g.claim_tight});
+    gaps += csv_line(
+        {g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k), std::to_string(g.n),
+         g.label_n, g.label_next, format_significant(g.L_n, kLongDoubleDigits),
+         format_significant(g.L_next, kLongDoubleDigits), format_significant(g.L_next - g.L_n, 15),
+         format_significant(g.delta_difference, 15), g.claim_tight});
   write_whole(dir / "atlas-gaps.csv", gaps);
   write_whole(dir / "atlas.csv", atlas_table(atlas));
 }
@@ -169,7 +174,7 @@ std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
   long long number = 1;
   for (const auto& f : read_table(csv, kColumns, "atlas table")) {
     ++number;
-    long long n = 0;
+    long long n = 0, confirmations = 0;
     PackingRecord row;
     try {
       n = std::stoll(f[0]);
@@ -180,14 +185,15 @@ std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
       row.d = PreciseReal(d, f[3], significant_digits(f[3]));
       row.L = PreciseReal(std::stold(f[4]), f[4], significant_digits(f[4]));
       (void)std::stold(f[5]);
+      confirmations = std::stoll(f[9]);
     } catch (const std::exception&) {
       throw std::runtime_error(
           fmt::format("{}:{}: a number field is not a number", csv.string(), number));
     }
     row.label = f[2];
     row.certified = f[8] == "true";
-    row.sources.push_back({PackingSource::Kind::Table, f[9]});
-    row.file = f[10];
+    row.sources.push_back({PackingSource::Kind::Table, f[10], 0, confirmations});
+    row.file = f[11];
     // The coordinates file gives the pattern (its points and d; bonds come with load_atlas).
     const PointsFile points = read_points_file((csv.parent_path() / row.file).string());
     if (static_cast<long long>(points.points.size()) != n)

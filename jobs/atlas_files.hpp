@@ -1,5 +1,5 @@
 // The atlas on disk (issue 12): DIR/atlas.csv with the columns
-//   n, rank, label, d, L, delta, bonds, rattlers, certified, source, file
+//   n, rank, label, d, L, delta, bonds, rattlers, certified, confirmations, source, file
 // (d and L as strings with the polish's significant digits, delta with L's decimals) and one
 // coordinates file per row, DIR/atlas/<label>.txt: `x y` lines in the unit triangle with the
 // polish's digits under the `# d:` header that `-o` writes. The format's one place: the writer
@@ -24,7 +24,7 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir);
 std::string atlas_table(const AtlasResult& atlas);
 
 // DIR/atlas.csv read back: a record per row with its label, rank, d and L (the table's digits),
-// its coordinates (from its file), `file`, and the source column as a Table source; bonds are not in the files (load_atlas analyses them). Throws a one-line
+// its coordinates (from its file), `file`, and the source and confirmations columns as a Table source; bonds are not in the files (load_atlas analyses them). Throws a one-line
 // std::runtime_error naming the file and line when the table or a file is missing or malformed.
 std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv);
 

@@ -85,7 +85,7 @@ std::vector<PackingRecord> distinct_of(std::vector<RunOutcome>& runs, long long 
     if (runs[r].analysis && runs[r].analysis->identification.polish.converged) {
       usable.push_back(r);
       PackingRecord record = pipeline::record_of(*runs[r].analysis);
-      record.sources.push_back({PackingSource::Kind::Billiards, "", runs[r].seed, 1});
+      record.sources.push_back({PackingSource::Kind::Billiards, "", runs[r].seed, 1, 1});
       found.push_back(std::move(record));
     }
   std::vector<std::size_t> group;

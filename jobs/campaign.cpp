@@ -64,7 +64,7 @@ store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit) 
     record.outcome = analysis.certified() ? "certified" : "not certified: " + analysis.status();
     if (analysis.certified()) {
       PackingRecord found = pipeline::record_of(analysis);
-      found.sources.push_back({PackingSource::Kind::Billiards, "", unit.seed, 1});
+      found.sources.push_back({PackingSource::Kind::Billiards, "", unit.seed, 1, 1});
       record.packing = store::stored_of(found, request.tool_version);
     }
   } catch (const std::exception& e) {

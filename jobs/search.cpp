@@ -36,6 +36,9 @@ struct HoppingSettings {
   double relocate_probability = 0.3;            // else shrink and regrow
   double growth_rate = kDefaultGrowthRate;      // of every regrow and random start
   double trial_gap = 1e-10;                     // billiards stop: estimated relative gap
+  // A restart is, this often, the triangular lattice of the smallest k with Delta(k) >= n
+  // missing Delta(k) - n random sites (shrunk and regrown), else a random compression.
+  double lattice_probability = 0.5;
   int stale_limit = 12;       // steps without improving before a member restarts from random
   double same_d = 1e-9;       // relative: two billiards d this close count as one packing here
   double duplicate_d = 1e-9;  // two members this close: the one not holding the best restarts
@@ -179,7 +182,31 @@ class Chain {
     return scene;
   }
 
-  Packing random_start() { return run_billiards(growth_scene({}, 0), rng_).packing; }
+  Packing random_start() {
+    std::uniform_real_distribution<double> u01(0, 1);
+    if (u01(rng_) < settings_.lattice_probability) return lattice_start();
+    return run_billiards(growth_scene({}, 0), rng_).packing;
+  }
+
+  // The structure the near-triangular optima share (GL1995: Delta(k) minus a few disks, shifted
+  // rows): the k-row lattice with random vacancies, shrunk and regrown so that rows can slide.
+  Packing lattice_start() {
+    const long long n = request_.n;
+    long long k = 1;
+    while (k * (k + 1) / 2 < n) ++k;
+    if (k < 2) return run_billiards(growth_scene({}, 0), rng_).packing;
+    const long double spacing = 1.0L / (k - 1);
+    std::vector<Vec2L> sites;
+    for (long long j = 0; j < k; ++j)
+      for (long long i = 0; i + j < k; ++i)
+        sites.push_back({(i + j / 2.0L) * spacing, j * spacing * kSqrt3 / 2});
+    std::shuffle(sites.begin(), sites.end(), rng_);
+    sites.resize(static_cast<std::size_t>(n));
+    Packing start;
+    start.points = std::move(sites);
+    start.d = spacing;
+    return run_billiards(growth_scene(start, shrunk_d(spacing)), rng_).packing;
+  }
 
   // d shrunk by a relative amount drawn log-uniformly in [shrink_min, shrink_max].
   long double shrunk_d(long double d) {
@@ -224,8 +251,8 @@ class Chain {
   // A state denser than the chain's best billiards state so far is analysed; a certified one
   // denser than the chain's best certified packing becomes its best.
   void consider(const Packing& p) {
-    if (p.d <= best_billiards_d_ * (1 + settings_.same_d)) return;
-    best_billiards_d_ = p.d;
+    if (p.d <= best_billiards_d_ * (1 - settings_.same_d)) return;
+    best_billiards_d_ = std::max(best_billiards_d_, p.d);
     analyse(p, false);
   }
 
@@ -239,7 +266,9 @@ class Chain {
     }
     if (!analysis.certified()) return;
     PackingRecord record = pipeline::record_of(analysis);
-    record.sources.push_back({PackingSource::Kind::Billiards, "", summary_.seed, 1});
+    // A chain continued from stored packings is not an independent confirmation of them.
+    record.sources.push_back(
+        {PackingSource::Kind::Billiards, "", summary_.seed, 1, request_.starts.empty() ? 1 : 0});
     const long double d = record.d.value();
     records_.push_back(record);
     if (final_member || d <= best_d_ * (1 + kTargetTolerance)) return;

@@ -31,18 +31,19 @@ json row_json(const PackingRecord& r) {
           {"verdict", r.verdict},
           {"source", r.source_text()},
           {"runs", r.runs()},
+          {"confirmations", r.confirmations()},
           {"file", r.file}};
 }
 
 }  // namespace
 
 void render_text(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions&) {
-  out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5}  {}\n", "n", "label", "d", "bonds", "ratt.",
-                     "source");
+  out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5} {:>6}  {}\n", "n", "label", "d", "bonds",
+                     "ratt.", "conf.", "source");
   for (const auto& r : a.rows)
     if (r.rank == 1)
-      out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5}  {}\n", r.n(), r.label, r.d.str(),
-                         r.bonds(), r.rattlers(), r.source_text());
+      out << fmt::format("{:>5}  {:<12} {:<34} {:>6} {:>5} {:>6}  {}\n", r.n(), r.label, r.d.str(),
+                         r.bonds(), r.rattlers(), r.confirmations(), r.source_text());
   for (const auto& b : a.builders)
     if (b.rank != 1)
       out << fmt::format("builder {} (n = {}): d = {}, {}\n", b.member, b.n, b.d,

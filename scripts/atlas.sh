@@ -6,7 +6,7 @@
 # (n, seed) already in the database, so an interrupted run (Ctrl-C, a killed session) continues
 # where it stopped, and a finished one costs only the atlas step (~2 min).
 #
-# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress prune atlas
+# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress confirm prune atlas
 #        (default: all of them, in that order). Env: TRIPACK (build/tripack), THREADS (2).
 # Each step's wall and CPU time is appended to data/atlas-times.log; docs/atlas.md has the
 # totals measured on the project's 2-core machine.
@@ -17,7 +17,7 @@ THREADS=${THREADS:-2}
 DB=data/atlas.db
 [ -x "$T" ] || bash scripts/build.sh
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(small large targeted stress prune atlas)
+[ ${#steps[@]} -gt 0 ] || steps=(small large targeted stress confirm prune atlas)
 TIMEFORMAT="%R s wall, %U s user, %S s sys"
 
 # step NAME COMMAND...: runs it, its output to data/logs/NAME.log, its times to atlas-times.log.
@@ -63,9 +63,21 @@ for s in "${steps[@]}"; do
       step prune-small "$T" db prune --keep 30 --n 2..34 --db "$DB"
       step prune-large "$T" db prune --keep 5 --n 35..100000 --db "$DB"
       step prune-stress "$T" db prune --keep 5 --db data/stress.db ;;
+    confirm)  # issue 21: fresh searches from random starts (`campaign --search-seconds`) at every
+      # n = 35..200 (n <= 34 have 2000 runs each), then 4 longer ones wherever the atlas's best has
+      # fewer than 3 confirmations. Seeds of their own (10001.., 20001..): a chain's first seconds
+      # are those of the chain of the same seed with a longer budget, so seeds are never reused.
+      step search-35-200 "$T" campaign --n 35..200 --runs 3 --seed 10001 --search-seconds 8 \
+        --threads "$THREADS" --db "$DB"
+      step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
+        --out data --json
+      for n in $(awk -F, 'NR > 1 && $2 == 1 && $10 < 3 { print $1 }' data/atlas.csv); do
+        step "confirm-$n" "$T" campaign --n "$n" --runs 4 --seed 20001 --search-seconds 30 \
+          --threads "$THREADS" --db "$DB"
+      done ;;
     atlas)
       step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
         --out data --json ;;
-    *) echo "atlas.sh: unknown step '$s' (small large targeted stress prune atlas)" >&2; exit 2 ;;
+    *) echo "atlas.sh: unknown step '$s' (small large targeted stress confirm prune atlas)" >&2; exit 2 ;;
   esac
 done

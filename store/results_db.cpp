@@ -217,7 +217,8 @@ std::string d_key(const std::string& d) {
 
 constexpr const char* kPackingColumns =
     "id, n, d, graph_hash, points, bonds, rattlers, certified, first_seed, runs, origin, source, "
-    "tool_version";
+    "tool_version, (SELECT COUNT(*) FROM runs WHERE runs.packing_id = packings.id AND runs.method "
+    "NOT LIKE '%, continued')";
 // Largest d first; then most runs, then the first seed (imports without one last), then age.
 constexpr const char* kPackingOrder = "d_value DESC, runs DESC, first_seed IS NULL, first_seed, id";
 
@@ -237,6 +238,7 @@ StoredPacking packing_from_row(const Statement& s) {
   p.origin = s.text(10);
   p.source = s.text(11);
   p.tool_version = s.text(12);
+  p.independent_runs = s.integer(13);
   return p;
 }
 
@@ -606,7 +608,7 @@ std::vector<StoredPacking> ResultsDb::best_per_n() const {
   // The largest d of every n (ties: most runs, then first seed), by n.
   const std::string sql = fmt::format(
       "SELECT {} FROM (SELECT *, ROW_NUMBER() OVER (PARTITION BY n ORDER BY {}) AS rank FROM "
-      "packings) WHERE rank = 1 ORDER BY n",
+      "packings) AS packings WHERE rank = 1 ORDER BY n",
       kPackingColumns, kPackingOrder);
   Statement s(db_, path_, sql.c_str());
   std::vector<StoredPacking> out;
@@ -664,7 +666,8 @@ PackingRecord record_of(const StoredPacking& stored) {
   if (stored.origin == "import")
     record.sources.push_back({PackingSource::Kind::Import, stored.source});
   if (stored.has_seed)
-    record.sources.push_back({PackingSource::Kind::Billiards, "", stored.first_seed, stored.runs});
+    record.sources.push_back({PackingSource::Kind::Billiards, "", stored.first_seed, stored.runs,
+                              stored.independent_runs});
   return record;
 }
 

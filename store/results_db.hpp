@@ -1,5 +1,5 @@
-// The campaign results database (docs/campaigns.md, issue 11): SQLite in WAL mode. Every finished work
-// unit (n, seed) is one transaction (BEGIN IMMEDIATE) holding the run and, when new for its n,
+// The campaign results database (docs/campaigns.md, issue 11): SQLite in WAL mode. Every finished
+// work unit (n, seed) is one transaction (BEGIN IMMEDIATE) holding the run and, when new for its n,
 // the packing it found; so a killed campaign loses at most the unit it was running, and a rerun
 // skips every unit already recorded. Errors are StoreError with one line naming the file.
 #pragma once
@@ -42,9 +42,12 @@ struct StoredPacking {
   std::vector<Bond> bonds;
   std::vector<int> rattlers;
   bool certified = false;
-  std::uint64_t first_seed = 0;     // the first run that ended in it, when has_seed
-  bool has_seed = true;             // false: imported, and no run has ended in it since
-  long long runs = 1;               // units that ended in it (0 for an import no run found)
+  std::uint64_t first_seed = 0;  // the first run that ended in it, when has_seed
+  bool has_seed = true;          // false: imported, and no run has ended in it since
+  long long runs = 1;            // units that ended in it (0 for an import no run found)
+  // Of those, the units that started from nothing stored: billiards runs and search chains, not
+  // a search continued from stored packings. Read from the runs table; never written.
+  long long independent_runs = 0;
   std::string origin = "campaign";  // "campaign" (a run found it) or "import" (from a file)
   std::string source;               // the imported file's name; empty for a campaign's
   std::string tool_version;
@@ -81,7 +84,7 @@ struct RunRecord {
   long long n = 0;
   std::uint64_t seed = 0;
   std::string method = "billiards";  // or "search S s": a search chain (jobs/search.hpp)
-  std::string outcome;  // "certified", "not certified", "error: ..."
+  std::string outcome;               // "certified", "not certified", "error: ..."
   long long events = 0;
   double seconds = 0;
   std::optional<StoredPacking> packing;  // the analysed end state, when usable

@@ -42,7 +42,7 @@ std::filesystem::path data_dir() {
 }
 
 struct Row {
-  long n = 0, rank = 0, bonds = 0, rattlers = 0;
+  long n = 0, rank = 0, bonds = 0, rattlers = 0, confirmations = 0;
   std::string label, d, L, delta, certified, source, file;
 };
 
@@ -71,8 +71,9 @@ std::vector<Row> read_table() {
   if (!in) throw std::runtime_error("cannot read " + (data_dir() / "atlas.csv").string());
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> header{"n",     "rank",     "label",     "d",      "L",   "delta",
-                                        "bonds", "rattlers", "certified", "source", "file"};
+  const std::vector<std::string> header{"n",         "rank",          "label",  "d",
+                                        "L",         "delta",         "bonds",  "rattlers",
+                                        "certified", "confirmations", "source", "file"};
   if (fields_of(line) != header) throw std::runtime_error("atlas.csv: unexpected header " + line);
   std::vector<Row> rows;
   while (std::getline(in, line)) {
@@ -89,8 +90,9 @@ std::vector<Row> read_table() {
     r.bonds = std::stol(f[6]);
     r.rattlers = std::stol(f[7]);
     r.certified = f[8];
-    r.source = f[9];
-    r.file = f[10];
+    r.confirmations = std::stol(f[9]);
+    r.source = f[10];
+    r.file = f[11];
     rows.push_back(r);
   }
   return rows;

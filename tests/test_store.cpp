@@ -329,6 +329,31 @@ TEST(Store, ASearchChainAndABilliardsRunOfOneSeedAreTwoUnits) {
   EXPECT_EQ(db.statistics().duplicate_runs, 0);
 }
 
+// Confirmations (issue 21): every unit that started from nothing stored counts, a search
+// continued from stored packings does not; the count survives into the packing record and
+// into the best-per-n query (which reads the runs table through a derived table).
+TEST(Store, ContinuedSearchesDoNotConfirmAPacking) {
+  const std::string path = fresh_path("confirm.db");
+  ResultsDb db = ResultsDb::open(path);
+  EXPECT_TRUE(db.record(run(3, 1, packing(3, "0.5", "h3"))));
+  RunRecord chain = run(3, 2, packing(3, "0.5", "h3"));
+  chain.method = "search 30 s";
+  EXPECT_TRUE(db.record(chain));
+  RunRecord continued = run(3, 3, packing(3, "0.5", "h3"));
+  continued.method = "search 30 s, continued";
+  EXPECT_TRUE(db.record(continued));
+  const StoredPacking stored = db.packings(3).at(0);
+  EXPECT_EQ(stored.runs, 3);
+  EXPECT_EQ(stored.independent_runs, 2);
+  EXPECT_EQ(db.best_per_n().at(0).independent_runs, 2);
+  PackingRecord record = record_of(stored);
+  EXPECT_EQ(record.confirmations(), 2);
+  // A builder giving the same packing counts once more, however many builders name it.
+  record.sources.push_back({PackingSource::Kind::Builder, "hexagonal k=2"});
+  record.sources.push_back({PackingSource::Kind::Builder, "matrix k=2 p=1"});
+  EXPECT_EQ(record.confirmations(), 3);
+}
+
 TEST(Store, ImportedPackingsHaveNoSeedUntilARunFindsThem) {
   const std::string path = fresh_path("imported.db");
   ResultsDb db = ResultsDb::open(path);
