@@ -258,12 +258,15 @@ class Chain {
 
   void analyse(const Packing& p, bool final_member) {
     ++summary_.analyses;
+    const double cpu_before = thread_cpu_seconds();
     pipeline::Analysis analysis;
     try {
       analysis = pipeline::analyze_packing(p, {});
     } catch (const std::exception&) {
+      summary_.analysis_cpu_seconds += thread_cpu_seconds() - cpu_before;
       return;  // not usable: the search goes on
     }
+    summary_.analysis_cpu_seconds += thread_cpu_seconds() - cpu_before;
     if (!analysis.certified()) return;
     PackingRecord record = pipeline::record_of(analysis);
     // A chain continued from stored packings is not an independent confirmation of them.

@@ -1,10 +1,12 @@
 // `tripack search` (issue 21): a search for the densest packing of n disks that learns from what
 // it finds, with a time budget. Monotonic basin hopping on a small population (docs/search.md):
 // each step perturbs a member (shrink and regrow by billiards, or move its loosest disk to the
-// largest hole), keeps the result when it is not worse, and restarts a member from random when it
-// stops improving or duplicates another. Only states denser than the best so far are analysed
-// (relaxed, polished, certified), so the budget goes to billiards. The baseline it is measured
-// against, independent default runs, is the same loop with method Restarts.
+// largest hole), keeps the result when it is not worse, and restarts a member (from random, or
+// from the triangular lattice with random vacancies) when it stops improving or duplicates
+// another. Only states at least as dense as the best so far (relative 1e-9: distinct packings
+// can differ by less than a billiards d resolves) are analysed (relaxed, polished, certified).
+// The baseline it is measured against, independent default runs, is the same loop with method
+// Restarts.
 //
 // One chain per thread, chain c seeded by (seed, c): one thread and a step budget give the same
 // result every time; a wall-time budget gives the same steps in the same order, so the same
@@ -49,7 +51,8 @@ struct SearchRequest {
 struct SearchChain {
   std::uint64_t seed = 0;  // the chain's index among the request's chains
   long long steps = 0;
-  long long analyses = 0;  // states analysed (each was denser than the best so far)
+  long long analyses = 0;           // states analysed (none less dense than the best so far)
+  double analysis_cpu_seconds = 0;  // of cpu_seconds, those spent analysing (the rest: billiards)
   double seconds = 0, cpu_seconds = 0;
   std::string best_d;  // the chain's best certified d ("" if none)
   // When the chain first held its best packing (wall and thread CPU seconds since its start).

@@ -314,6 +314,7 @@ void render_json(std::ostream& out, const SearchResult& r, const RenderOptions& 
     chains.push_back({{"seed", c.seed},
                       {"steps", c.steps},
                       {"analyses", c.analyses},
+                      {"analysis_cpu_seconds", c.analysis_cpu_seconds},
                       {"seconds", c.seconds},
                       {"cpu_seconds", c.cpu_seconds},
                       {"best_d", c.best_d.empty() ? json(nullptr) : json(c.best_d)},

@@ -64,15 +64,15 @@ for s in "${steps[@]}"; do
       step prune-large "$T" db prune --keep 5 --n 35..100000 --db "$DB"
       step prune-stress "$T" db prune --keep 5 --db data/stress.db ;;
     confirm)  # issue 21: fresh searches from random starts (`campaign --search-seconds`) at every
-      # n = 35..200 (n <= 34 have 2000 runs each), then 4 longer ones wherever the atlas's best has
+      # n = 35..200 (n <= 34 have 2000 runs each), then 4 of 20 s wherever the atlas's best has
       # fewer than 3 confirmations. Seeds of their own (10001.., 20001..): a chain's first seconds
       # are those of the chain of the same seed with a longer budget, so seeds are never reused.
-      step search-35-200 "$T" campaign --n 35..200 --runs 3 --seed 10001 --search-seconds 8 \
+      step search-35-200 "$T" campaign --n 35..200 --runs 3 --seed 10001 --search-seconds 4 \
         --threads "$THREADS" --db "$DB"
       step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
         --out data --json
       for n in $(awk -F, 'NR > 1 && $2 == 1 && $10 < 3 { print $1 }' data/atlas.csv); do
-        step "confirm-$n" "$T" campaign --n "$n" --runs 4 --seed 20001 --search-seconds 30 \
+        step "confirm-$n" "$T" campaign --n "$n" --runs 4 --seed 20001 --search-seconds 20 \
           --threads "$THREADS" --db "$DB"
       done ;;
     atlas)

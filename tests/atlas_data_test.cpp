@@ -166,6 +166,34 @@ TEST(AtlasData, EveryNFrom2To200HasACertifiedBestRowWithItsFile) {
   }
 }
 
+// Issue 21: every best of n = 2..200 was reached by at least 3 independent searches (a builder
+// counts as one), or data/atlas-unconfirmed.csv (`n,why`) names it with the reason; a listed n
+// must really be below 3, so the list cannot outlive the data.
+TEST(AtlasData, EveryBestIsConfirmedThreeTimesOrSaysWhyNot) {
+  std::map<long, std::string> unconfirmed;
+  std::ifstream list(data_dir() / "atlas-unconfirmed.csv");
+  ASSERT_TRUE(list) << "cannot read atlas-unconfirmed.csv";
+  std::string line;
+  std::getline(list, line);
+  ASSERT_EQ(line, "n,why");
+  while (std::getline(list, line)) {
+    if (line.empty()) continue;
+    const auto f = fields_of(line);
+    ASSERT_EQ(f.size(), 2u) << line;
+    ASSERT_FALSE(f[1].empty()) << "n = " << f[0] << " without a reason";
+    unconfirmed[std::stol(f[0])] = f[1];
+  }
+  for (const auto& r : read_table()) {
+    if (r.rank != 1 || r.n < 2 || r.n > 200) continue;
+    EXPECT_GE(r.confirmations, 0) << r.label;
+    if (unconfirmed.count(r.n))
+      EXPECT_LT(r.confirmations, 3) << r.label << " is confirmed: remove it from the list";
+    else
+      EXPECT_GE(r.confirmations, 3) << r.label << " has " << r.confirmations
+                                    << " confirmations and no reason in atlas-unconfirmed.csv";
+  }
+}
+
 // Containment and the minimum distance of every file, in MPFR. Tolerances: the coordinates are
 // written with 30 decimals (rounding <= 5e-31 each), so a distance or a signed distance to a side
 // is off by at most ~2e-30 of the side; d >= 1/30 here, so 1e-28 relative is 30x that margin and
