@@ -292,6 +292,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
   request.steps = o.steps;
   request.seed = o.seed;
   request.threads = o.threads;
+  request.lattice_starts = o.lattice_starts;
   if (o.method == "restarts")
     request.method = jobs::SearchMethod::Restarts;
   else if (o.method != "basin-hopping")

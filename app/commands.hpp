@@ -91,6 +91,7 @@ struct SearchOptions {
   int threads = 1;
   std::string db;  // empty: start from nothing stored, record nothing
   std::string method = "basin-hopping";
+  bool lattice_starts = true;
   std::string target;  // stop once this d is reached (decimal)
   OutputOptions out;
 };

@@ -122,6 +122,9 @@ Action add_search(CLI::App& cli, const GlobalOptions& g, SearchOptions& o) {
                 "basin-hopping (the search) or restarts (independent default billiards runs, the "
                 "baseline)");
   c->add_option("--target", o.target, "stop a chain once a certified d >= this is found");
+  c->add_flag("!--no-lattice-starts", o.lattice_starts,
+              "every fresh start from random (default: half are the triangular lattice with "
+              "random vacancies)");
   add_output_flags(c, o.out, true);
   add_diagram_options(c, o.diagrams);
   return [c, &g, &o] { return *c ? cmd_search(g, o) : -1; };

@@ -184,7 +184,8 @@ class Chain {
 
   Packing random_start() {
     std::uniform_real_distribution<double> u01(0, 1);
-    if (u01(rng_) < settings_.lattice_probability) return lattice_start();
+    if (request_.lattice_starts && u01(rng_) < settings_.lattice_probability)
+      return lattice_start();
     return run_billiards(growth_scene({}, 0), rng_).packing;
   }
 

@@ -38,6 +38,9 @@ struct SearchRequest {
   std::uint64_t seed = 1;
   int threads = 1;  // independent chains, one per thread
   SearchMethod method = SearchMethod::BasinHopping;
+  // Half the fresh starts are the triangular lattice with random vacancies. They found what
+  // random starts miss above n ~ 60; below, they can trap a chain (t34b: docs/search.md).
+  bool lattice_starts = true;
   // Stop a chain once a certified packing with d >= target (relative 1e-12) is found.
   std::optional<long double> target;
   // Packings to continue from (a database's best): they join the population before any random
