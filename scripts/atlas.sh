@@ -7,7 +7,7 @@
 # where it stopped, and a finished one costs only the atlas step (~2 min).
 #
 # Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress confirm prune atlas
-#        (default: all of them, in that order). Env: TRIPACK (build/tripack), THREADS (2).
+#        (default: all of them, in that order). Env: TRIPACK (build/tripack), THREADS (2), CONFIRM_RUNS (4).
 # Each step's wall and CPU time is appended to data/atlas-times.log; docs/atlas.md has the
 # totals measured on the project's 2-core machine.
 set -euo pipefail
@@ -67,12 +67,14 @@ for s in "${steps[@]}"; do
       # n = 35..200 (n <= 34 have 2000 runs each), then 4 of 20 s wherever the atlas's best has
       # fewer than 3 confirmations. Seeds of their own (10001.., 20001..): a chain's first seconds
       # are those of the chain of the same seed with a longer budget, so seeds are never reused.
+      # A later round raises CONFIRM_RUNS (8: seeds 20005..20008 are added where still needed).
       step search-35-200 "$T" campaign --n 35..200 --runs 3 --seed 10001 --search-seconds 4 \
         --threads "$THREADS" --db "$DB"
       step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
         --out data --json
       for n in $(awk -F, 'NR > 1 && $2 == 1 && $10 < 3 { print $1 }' data/atlas.csv); do
-        step "confirm-$n" "$T" campaign --n "$n" --runs 4 --seed 20001 --search-seconds 20 \
+        step "confirm-$n" "$T" campaign --n "$n" --runs "${CONFIRM_RUNS:-4}" --seed 20001 \
+          --search-seconds 20 \
           --threads "$THREADS" --db "$DB"
       done ;;
     atlas)
