@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <unordered_set>
 
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
@@ -39,9 +40,17 @@ struct HoppingSettings {
   // A restart is, this often, the triangular lattice of the smallest k with Delta(k) >= n
   // missing Delta(k) - n random sites (shrunk and regrown), else a random compression.
   double lattice_probability = 0.5;
-  int stale_limit = 12;       // steps without improving before a member restarts from random
-  double same_d = 1e-9;       // relative: two billiards d this close count as one packing here
-  double duplicate_d = 1e-9;  // two members this close: the one not holding the best restarts
+  // Of the lattice starts, this many have their vacancies on a rough lattice line (the rest
+  // uniformly at random).
+  double vacancy_path_probability = 0.75;
+  double path_straight = 0.85;  // a path's step goes straight on (else turns 2:1 over jogs)
+  double path_from_side = 0.5;  // a path starts on a side (else anywhere)
+  int stale_limit = 12;         // steps without improving before a member restarts from random
+  double same_d = 1e-9;         // relative: two billiards d this close count as one packing here
+  double duplicate_d = 1e-9;    // two members this close: the one not holding the best restarts
+  long long tie_interval = 4;   // at most one tie analysed per this many steps
+  // A step is, this often, a fresh start (probe) that replaces the least dense member if denser.
+  double probe_probability = 0.5;
 };
 
 // Relative d tolerance of "the target is reached": a polished d is good to ~1e-17, and two
@@ -69,6 +78,45 @@ std::vector<int> contact_counts(const Packing& p, double rel) {
     }
   }
   return count;
+}
+
+// The contact graph of a billiards end state without its rattlers, as a hash of its edge list:
+// pairs and disk-side contacts within relative 1e-8 of d (its gaps are ~1e-10), then disks with
+// fewer than 3 contacts removed until none is left (a rattler's contacts are different every time
+// a member returns to the same packing).
+std::size_t contact_graph_key(const Packing& p) {
+  const std::size_t n = p.size();
+  const long double reach = p.d * (1 + 1e-8L), side_reach = p.d * 1e-8L;
+  std::vector<std::vector<std::size_t>> adjacent(n);  // other disks, or n + side for a side
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2L a = p.points[i];
+    const long double sides[3] = {a.y, (kSqrt3 * a.x - a.y) / 2, (kSqrt3 * (1 - a.x) - a.y) / 2};
+    for (std::size_t s = 0; s < 3; ++s)
+      if (sides[s] < side_reach) adjacent[i].push_back(n + s);
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const long double dx = a.x - p.points[j].x, dy = a.y - p.points[j].y;
+      if (dx * dx + dy * dy < reach * reach) adjacent[i].push_back(j), adjacent[j].push_back(i);
+    }
+  }
+  std::vector<bool> removed(n, false);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (removed[i]) continue;
+      int live = 0;
+      for (std::size_t j : adjacent[i]) live += j >= n || !removed[j];
+      if (live < 3) removed[i] = true, changed = true;
+    }
+  }
+  std::size_t key = n;
+  const auto mix = [&key](std::size_t v) {
+    key ^= v + 0x9e3779b97f4a7c15ULL + (key << 6) + (key >> 2);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    if (!removed[i])
+      for (std::size_t j : adjacent[i])
+        if (j >= n || (j > i && !removed[j])) mix(i * (n + 3) + j);
+  return key;
 }
 
 Vec2L random_point(std::mt19937_64& rng) {
@@ -131,6 +179,11 @@ class Chain {
       add_member(random_start());
       return;
     }
+    std::uniform_real_distribution<double> draw(0, 1);
+    if (draw(rng_) < settings_.probe_probability) {
+      probe();
+      return;
+    }
     const std::size_t i = next_++ % members_.size();
     Member& member = members_[i];
     std::uniform_real_distribution<double> u01(0, 1);
@@ -149,6 +202,21 @@ class Chain {
       else
         member.stale = 0;
     }
+  }
+
+  // A fresh start that takes the place of the least dense member when it is denser (and is not
+  // a copy of another member).
+  void probe() {
+    bool lattice = false;
+    const Packing p = random_start(&lattice);
+    consider(p, lattice);
+    std::size_t worst = 0;
+    for (std::size_t j = 1; j < members_.size(); ++j)
+      if (members_[j].packing.d < members_[worst].packing.d) worst = j;
+    if (p.d <= members_[worst].packing.d) return;
+    for (const Member& m : members_)
+      if (std::abs(m.packing.d - p.d) < settings_.duplicate_d * p.d) return;
+    members_[worst] = Member{p, 0};
   }
 
   void add_member(const Packing& p) {
@@ -182,10 +250,12 @@ class Chain {
     return scene;
   }
 
-  Packing random_start() {
+  Packing random_start(bool* lattice = nullptr) {
     std::uniform_real_distribution<double> u01(0, 1);
-    if (request_.lattice_starts && u01(rng_) < settings_.lattice_probability)
+    if (request_.lattice_starts && u01(rng_) < settings_.lattice_probability) {
+      if (lattice) *lattice = true;
       return lattice_start();
+    }
     return run_billiards(growth_scene({}, 0), rng_).packing;
   }
 
@@ -197,16 +267,75 @@ class Chain {
     while (k * (k + 1) / 2 < n) ++k;
     if (k < 2) return run_billiards(growth_scene({}, 0), rng_).packing;
     const long double spacing = 1.0L / (k - 1);
+    const long long vacancies = k * (k + 1) / 2 - n;
+    std::vector<bool> vacant(static_cast<std::size_t>(k * (k + 1) / 2), false);
+    std::uniform_real_distribution<double> u01(0, 1);
+    if (!(u01(rng_) < settings_.vacancy_path_probability && vacancy_path(k, vacancies, vacant))) {
+      std::vector<std::size_t> order(vacant.size());
+      for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+      std::shuffle(order.begin(), order.end(), rng_);
+      std::fill(vacant.begin(), vacant.end(), false);
+      for (long long v = 0; v < vacancies; ++v) vacant[order[static_cast<std::size_t>(v)]] = true;
+    }
     std::vector<Vec2L> sites;
     for (long long j = 0; j < k; ++j)
       for (long long i = 0; i + j < k; ++i)
-        sites.push_back({(i + j / 2.0L) * spacing, j * spacing * kSqrt3 / 2});
-    std::shuffle(sites.begin(), sites.end(), rng_);
-    sites.resize(static_cast<std::size_t>(n));
+        if (!vacant[site_index(k, i, j)])
+          sites.push_back({(i + j / 2.0L) * spacing, j * spacing * kSqrt3 / 2});
     Packing start;
     start.points = std::move(sites);
     start.d = spacing;
     return run_billiards(growth_scene(start, shrunk_d(spacing)), rng_).packing;
+  }
+
+  // Site (i, j) of the k-row lattice (row j from the bottom, i along it) as an index.
+  static std::size_t site_index(long long k, long long i, long long j) {
+    return static_cast<std::size_t>(j * k - j * (j - 1) / 2 + i);
+  }
+
+  // Vacancies along a rough lattice line: a walk from a random site in one of the 6 lattice
+  // directions, each step straight on (70%), turned by 60 degrees (20%) or jogged to a second
+  // neighbour (10%). In 173 of the atlas's best packings of n = 20..200 that map onto the lattice
+  // Delta(k), 86 have their Delta(k) - n vacancies on one straight segment and most others on
+  // such a path: the line along which the two sides slip (docs/search.md). False: no walk of
+  // that length fitted in 20 tries.
+  bool vacancy_path(long long k, long long vacancies, std::vector<bool>& vacant) {
+    static constexpr long long kDirections[6][2] = {{1, 0},  {0, 1},  {-1, 1},
+                                                    {-1, 0}, {0, -1}, {1, -1}};
+    if (vacancies < 1) return true;
+    std::uniform_int_distribution<long long> coordinate(0, k - 1);
+    std::uniform_int_distribution<int> direction(0, 5);
+    std::uniform_real_distribution<double> u01(0, 1);
+    for (int attempt = 0; attempt < 20; ++attempt) {
+      std::fill(vacant.begin(), vacant.end(), false);
+      long long i = coordinate(rng_), j = coordinate(rng_);
+      if (i + j >= k) i = k - 1 - i, j = k - 1 - j;  // a uniform site of the triangle
+      if (u01(rng_) < settings_.path_from_side) {    // or a uniform site on a side
+        const int side = std::uniform_int_distribution<int>(0, 2)(rng_);
+        const long long along = coordinate(rng_);
+        i = side == 0 ? along : side == 1 ? 0 : along;
+        j = side == 0 ? 0 : side == 1 ? along : k - 1 - along;
+      }
+      const int heading = direction(rng_);
+      long long placed = 0;
+      while (placed < vacancies && i >= 0 && j >= 0 && i + j < k && !vacant[site_index(k, i, j)]) {
+        vacant[site_index(k, i, j)] = true;
+        ++placed;
+        const double u = u01(rng_);
+        const int side = u01(rng_) < 0.5 ? 1 : 5;  // turn left or right
+        const auto& straight = kDirections[heading];
+        const auto& turned = kDirections[(heading + side) % 6];
+        if (u < settings_.path_straight) {
+          i += straight[0], j += straight[1];
+        } else if (u < settings_.path_straight + (1 - settings_.path_straight) * 2 / 3) {
+          i += turned[0], j += turned[1];
+        } else {
+          i += straight[0] + turned[0], j += straight[1] + turned[1];
+        }
+      }
+      if (placed == vacancies) return true;
+    }
+    return false;
   }
 
   // d shrunk by a relative amount drawn log-uniformly in [shrink_min, shrink_max].
@@ -251,9 +380,27 @@ class Chain {
 
   // A state denser than the chain's best billiards state so far is analysed; a certified one
   // denser than the chain's best certified packing becomes its best.
-  void consider(const Packing& p) {
+  // A state whose contact graph (disks labelled as in the chain) was analysed before is not
+  // analysed again: a member walking a plateau keeps ending in the same packing, and at n ~ 190
+  // an analysis costs more than the billiards step that led to it.
+  //
+  // Ties (states within same_d of the best so far) are analysed at most once every
+  // tie_interval steps: above n ~ 130 a chain meets a plateau of ties (Delta(k) with vacancies
+  // anywhere has d = 1/(k-1)), each a new contact graph costing more than a step.
+  void consider(const Packing& p, bool lattice = false) {
+    if (lattice) {
+      // The billiards d of a lattice start is that of the lattice: the rows' slip that makes it
+      // denser is found by the relax of the analysis, so every new one is analysed.
+      best_billiards_d_ = std::max(best_billiards_d_, p.d);
+      if (analysed_graphs_.insert(contact_graph_key(p)).second) analyse(p, false);
+      return;
+    }
     if (p.d <= best_billiards_d_ * (1 - settings_.same_d)) return;
+    const bool tie = p.d <= best_billiards_d_ * (1 + settings_.same_d);
     best_billiards_d_ = std::max(best_billiards_d_, p.d);
+    if (tie && tie_analyses_ * settings_.tie_interval > summary_.steps) return;
+    if (!analysed_graphs_.insert(contact_graph_key(p)).second) return;
+    tie_analyses_ += tie;
     analyse(p, false);
   }
 
@@ -308,6 +455,8 @@ class Chain {
   std::size_t next_ = 0;
   long double best_billiards_d_ = 0, best_d_ = 0;
   std::vector<PackingRecord> records_;
+  std::unordered_set<std::size_t> analysed_graphs_;
+  long long tie_analyses_ = 0;
   SearchChain summary_;
 };
 

@@ -1,10 +1,12 @@
 // `tripack search` (issue 21): a search for the densest packing of n disks that learns from what
 // it finds, with a time budget. Monotonic basin hopping on a small population (docs/search.md):
-// each step perturbs a member (shrink and regrow by billiards, or move its loosest disk to the
-// largest hole), keeps the result when it is not worse, and restarts a member (from random, or
-// from the triangular lattice with random vacancies) when it stops improving or duplicates
-// another. Only states at least as dense as the best so far (relative 1e-9: distinct packings
-// can differ by less than a billiards d resolves) are analysed (relaxed, polished, certified).
+// half the steps perturb a member (shrink and regrow by billiards, or move its loosest disk to
+// the largest hole) and keep the result when it is not worse; the other half are fresh starts
+// (probes: a random compression, or the triangular lattice with its vacancies on a rough
+// lattice line, the structure of most best packings above n ~ 50) that replace the least dense
+// member when denser. States at least as dense as the best so far are analysed (relaxed,
+// polished, certified); every new lattice start is, since only the relax finds the slip of rows
+// that makes it denser. Ties are rationed, and a contact graph is analysed once.
 // The baseline it is measured against, independent default runs, is the same loop with method
 // Restarts.
 //
