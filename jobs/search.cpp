@@ -81,10 +81,12 @@ std::vector<int> contact_counts(const Packing& p, double rel) {
 }
 
 // The contact graph of a billiards end state without its rattlers, as a hash of its edge list:
-// pairs and disk-side contacts within relative 1e-8 of d (its gaps are ~1e-10), then disks with
-// fewer than 3 contacts removed until none is left (a rattler's contacts are different every time
-// a member returns to the same packing).
-std::size_t contact_graph_key(const Packing& p) {
+// pairs and disk-side contacts within relative 1e-8 of d, then disks with fewer than 3 contacts
+// removed until none is left (a rattler's contacts are different every time a member returns to
+// the same packing). None when fewer than half the disks are left: an end state that billiards
+// has not jammed to 1e-8 everywhere (often one whose rows have begun to slip: the interesting
+// ones) has no graph to tell it by, and every such state would share one key.
+std::optional<std::size_t> contact_graph_key(const Packing& p) {
   const std::size_t n = p.size();
   const long double reach = p.d * (1 + 1e-8L), side_reach = p.d * 1e-8L;
   std::vector<std::vector<std::size_t>> adjacent(n);  // other disks, or n + side for a side
@@ -108,6 +110,8 @@ std::size_t contact_graph_key(const Packing& p) {
       if (live < 3) removed[i] = true, changed = true;
     }
   }
+  if (2 * static_cast<std::size_t>(std::count(removed.begin(), removed.end(), false)) < n)
+    return std::nullopt;
   std::size_t key = n;
   const auto mix = [&key](std::size_t v) {
     key ^= v + 0x9e3779b97f4a7c15ULL + (key << 6) + (key >> 2);
@@ -392,16 +396,25 @@ class Chain {
       // The billiards d of a lattice start is that of the lattice: the rows' slip that makes it
       // denser is found by the relax of the analysis, so every new one is analysed.
       best_billiards_d_ = std::max(best_billiards_d_, p.d);
-      if (analysed_graphs_.insert(contact_graph_key(p)).second) analyse(p, false);
+      if (first_time(p)) analyse(p, false);
       return;
     }
     if (p.d <= best_billiards_d_ * (1 - settings_.same_d)) return;
     const bool tie = p.d <= best_billiards_d_ * (1 + settings_.same_d);
     best_billiards_d_ = std::max(best_billiards_d_, p.d);
-    if (tie && tie_analyses_ * settings_.tie_interval > summary_.steps) return;
-    if (!analysed_graphs_.insert(contact_graph_key(p)).second) return;
+    // The baseline (independent default runs) analyses every tie, as `tripack billiards` does.
+    if (tie && request_.method == SearchMethod::BasinHopping &&
+        tie_analyses_ * settings_.tie_interval > summary_.steps)
+      return;
+    if (!first_time(p)) return;
     tie_analyses_ += tie;
     analyse(p, false);
+  }
+
+  // False when a state of the same contact graph was analysed before in this chain.
+  bool first_time(const Packing& p) {
+    const std::optional<std::size_t> key = contact_graph_key(p);
+    return !key || analysed_graphs_.insert(*key).second;
   }
 
   void analyse(const Packing& p, bool final_member) {

@@ -61,6 +61,20 @@ TEST(Search, ReachesTheProvenOptimumOfTen) {
   for (const auto& chain : result.chains) ASSERT_TRUE(chain.best.has_value());
 }
 
+// Delta(5) - 2 = 13 disks: GL1995's class Delta(k+2)-2 at k = 3, d(13) = 3/(6 + sqrt6 + 2 sqrt3)
+// (docs/classes.md, "Closed forms"; GL1995 gives d(13) as a root of 4x^4 - 144x^3 + ...). A
+// lattice start is Delta(5) with two vacancies; 20 steps of one chain reach it for every seed
+// tried, certified.
+TEST(Search, ReachesTheClosedFormOfThirteen) {
+  const double d13 = 3 / (6 + std::sqrt(6.0) + 2 * std::sqrt(3.0));
+  for (std::uint64_t seed : {1, 2, 3}) {
+    const jobs::SearchResult result = jobs::run_search(request(13, 20, seed));
+    ASSERT_FALSE(result.packings.empty());
+    EXPECT_TRUE(result.packings.front().certified);
+    EXPECT_NEAR(static_cast<double>(result.packings.front().d.value()), d13, 1e-15) << seed;
+  }
+}
+
 // A target stops the chain at the step that reached it: the hexagonal 15 = Delta(5), d = 1/4.
 TEST(Search, StopsOnceTheTargetIsReached) {
   jobs::SearchRequest r = request(15, 500, 3);
