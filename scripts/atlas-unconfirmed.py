@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+"""Writes data/atlas-unconfirmed.csv (issue 21): every n whose rank-1 row in data/atlas.csv has
+fewer than 3 confirmations, with why, from data/atlas.csv and the runs table of data/atlas.db:
+how many independent units ran at n (billiards runs and search chains from random starts;
+continued searches do not count) and what reached the best.
+usage: python3 scripts/atlas-unconfirmed.py [--next "CONFIRM_RUNS=12 bash scripts/atlas.sh confirm"]"""
+import argparse, csv, sqlite3
+
+ap = argparse.ArgumentParser()
+ap.add_argument("--atlas", default="data/atlas.csv")
+ap.add_argument("--db", default="data/atlas.db")
+ap.add_argument("--out", default="data/atlas-unconfirmed.csv")
+ap.add_argument("--next", default="CONFIRM_RUNS=12 bash scripts/atlas.sh confirm")
+a = ap.parse_args()
+db = sqlite3.connect(f"file:{a.db}?mode=ro", uri=True)
+rows = []
+for r in csv.DictReader(open(a.atlas)):
+    if r["rank"] != "1" or int(r["confirmations"]) >= 3:
+        continue
+    n = int(r["n"])
+    units = dict(db.execute("SELECT method, COUNT(*) FROM runs WHERE n = ? AND method NOT LIKE "
+                            "'%, continued' GROUP BY method", (n,)).fetchall())
+    total = sum(units.values())
+    searches = ", ".join(f"{c} of {m[len('search '):]}" for m, c in sorted(units.items())
+                         if m.startswith("search"))
+    conf = int(r["confirmations"])
+    builder = "builder" in r["source"]
+    by = []
+    if builder:
+        by.append("a builder's packing")
+    if conf - builder > 0:
+        by.append(f"{conf - builder} unit{'s' if conf - builder > 1 else ''}")
+    rows.append((n, f"reached by {' and '.join(by)} of the {total} independent units run at "
+                    f"n = {n} (search chains: {searches or 'none'}); next round: {a.next}"))
+with open(a.out, "w", newline="") as f:
+    w = csv.writer(f)
+    w.writerow(["n", "why"])
+    w.writerows(rows)
+print(f"{len(rows)} n below 3 confirmations: {' '.join(str(n) for n, _ in rows)}")
