@@ -37,8 +37,8 @@ struct HoppingSettings {
   double relocate_probability = 0.3;            // else shrink and regrow
   double growth_rate = kDefaultGrowthRate;      // of every regrow and random start
   double trial_gap = 1e-10;                     // billiards stop: estimated relative gap
-  // A restart is, this often, the triangular lattice of the smallest k with Delta(k) >= n
-  // missing Delta(k) - n random sites (shrunk and regrown), else a random compression.
+  // A fresh start is, this often, the triangular lattice of the smallest k with Delta(k) >= n
+  // missing Delta(k) - n sites (shrunk and regrown), else a random compression.
   double lattice_probability = 0.5;
   // Of the lattice starts, this many have their vacancies on a rough lattice line (the rest
   // uniformly at random).

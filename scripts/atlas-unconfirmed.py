@@ -33,7 +33,7 @@ for r in csv.DictReader(open(a.atlas)):
     rows.append((n, f"reached by {' and '.join(by)} of the {total} independent units run at "
                     f"n = {n} (search chains: {searches or 'none'}); next round: {a.next}"))
 with open(a.out, "w", newline="") as f:
-    w = csv.writer(f)
+    w = csv.writer(f, lineterminator="\n")
     w.writerow(["n", "why"])
     w.writerows(rows)
 print(f"{len(rows)} n below 3 confirmations: {' '.join(str(n) for n, _ in rows)}")
