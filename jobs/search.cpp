@@ -297,12 +297,12 @@ class Chain {
     return static_cast<std::size_t>(j * k - j * (j - 1) / 2 + i);
   }
 
-  // Vacancies along a rough lattice line: a walk from a random site in one of the 6 lattice
-  // directions, each step straight on (70%), turned by 60 degrees (20%) or jogged to a second
-  // neighbour (10%). In 173 of the atlas's best packings of n = 20..200 that map onto the lattice
-  // Delta(k), 86 have their Delta(k) - n vacancies on one straight segment and most others on
-  // such a path: the line along which the two sides slip (docs/search.md). False: no walk of
-  // that length fitted in 20 tries.
+  // Vacancies along a rough lattice line: a walk from a random site (path_from_side of the time
+  // one on a side) in one of the 6 lattice directions, each step straight on (path_straight),
+  // else turned by 60 degrees or, a third of those times, jogged to a second neighbour. Of the
+  // 173 atlas bests of n = 20..200 that map onto the lattice Delta(k), 86 have their
+  // Delta(k) - n vacancies on one straight segment and 77 on such a path: the line along which
+  // the two sides slip (docs/search.md). False: no walk of that length fitted in 20 tries.
   bool vacancy_path(long long k, long long vacancies, std::vector<bool>& vacant) {
     static constexpr long long kDirections[6][2] = {{1, 0},  {0, 1},  {-1, 1},
                                                     {-1, 0}, {0, -1}, {1, -1}};
