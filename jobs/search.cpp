@@ -62,21 +62,29 @@ struct Member {
   int stale = 0;
 };
 
-// Disks touching (within rel) another disk or a side, per disk (Packing convention: centres in
-// the unit triangle, a centre on a side touches that side).
-std::vector<int> contact_counts(const Packing& p, double rel) {
+// Who touches whom (within rel of d): for each disk, the other disks and, as n + s, the sides s
+// it touches (Packing convention: centres in the unit triangle, a centre on a side touches it).
+std::vector<std::vector<std::size_t>> contacts(const Packing& p, long double rel) {
   const std::size_t n = p.size();
-  std::vector<int> count(n, 0);
+  std::vector<std::vector<std::size_t>> adjacent(n);  // other disks, or n + side for a side
   const long double reach = p.d * (1 + rel), side_reach = p.d * rel;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2L a = p.points[i];
     const long double sides[3] = {a.y, (kSqrt3 * a.x - a.y) / 2, (kSqrt3 * (1 - a.x) - a.y) / 2};
-    for (long double s : sides) count[i] += s < side_reach;
+    for (std::size_t s = 0; s < 3; ++s)
+      if (sides[s] < side_reach) adjacent[i].push_back(n + s);
     for (std::size_t j = i + 1; j < n; ++j) {
       const long double dx = a.x - p.points[j].x, dy = a.y - p.points[j].y;
-      if (dx * dx + dy * dy < reach * reach) ++count[i], ++count[j];
+      if (dx * dx + dy * dy < reach * reach) adjacent[i].push_back(j), adjacent[j].push_back(i);
     }
   }
+  return adjacent;
+}
+
+// How many contacts each disk has.
+std::vector<int> contact_counts(const Packing& p, double rel) {
+  std::vector<int> count;
+  for (const auto& touching : contacts(p, rel)) count.push_back(static_cast<int>(touching.size()));
   return count;
 }
 
@@ -88,18 +96,7 @@ std::vector<int> contact_counts(const Packing& p, double rel) {
 // ones) has no graph to tell it by, and every such state would share one key.
 std::optional<std::size_t> contact_graph_key(const Packing& p) {
   const std::size_t n = p.size();
-  const long double reach = p.d * (1 + 1e-8L), side_reach = p.d * 1e-8L;
-  std::vector<std::vector<std::size_t>> adjacent(n);  // other disks, or n + side for a side
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2L a = p.points[i];
-    const long double sides[3] = {a.y, (kSqrt3 * a.x - a.y) / 2, (kSqrt3 * (1 - a.x) - a.y) / 2};
-    for (std::size_t s = 0; s < 3; ++s)
-      if (sides[s] < side_reach) adjacent[i].push_back(n + s);
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const long double dx = a.x - p.points[j].x, dy = a.y - p.points[j].y;
-      if (dx * dx + dy * dy < reach * reach) adjacent[i].push_back(j), adjacent[j].push_back(i);
-    }
-  }
+  const std::vector<std::vector<std::size_t>> adjacent = contacts(p, 1e-8L);
   std::vector<bool> removed(n, false);
   for (bool changed = true; changed;) {
     changed = false;
@@ -183,14 +180,13 @@ class Chain {
       add_member(random_start());
       return;
     }
-    std::uniform_real_distribution<double> draw(0, 1);
-    if (draw(rng_) < settings_.probe_probability) {
+    std::uniform_real_distribution<double> u01(0, 1);
+    if (u01(rng_) < settings_.probe_probability) {
       probe();
       return;
     }
     const std::size_t i = next_++ % members_.size();
     Member& member = members_[i];
-    std::uniform_real_distribution<double> u01(0, 1);
     const Packing trial = u01(rng_) < settings_.relocate_probability ? relocate(member.packing)
                                                                      : shrink(member.packing);
     consider(trial);
