@@ -80,4 +80,14 @@ std::vector<std::size_t> rank_records(long long n, std::vector<PackingRecord>& r
   return order;
 }
 
+void count_value_confirmations(std::vector<PackingRecord>& records) {
+  std::vector<long long> of_value(records.size(), 0);
+  for (std::size_t i = 0; i < records.size(); ++i)
+    for (const auto& other : records)
+      if (std::fabs(other.d.value() - records[i].d.value()) <=
+          kSameValueTolerance * records[i].d.value())
+        of_value[i] += other.own_confirmations();
+  for (std::size_t i = 0; i < records.size(); ++i) records[i].d_confirmations = of_value[i];
+}
+
 }  // namespace tripack

@@ -72,7 +72,7 @@ long long PackingRecord::runs() const {
   return runs;
 }
 
-long long PackingRecord::confirmations() const {
+long long PackingRecord::own_confirmations() const {
   long long count = 0;
   bool builder = false;
   for (const auto& s : sources) {

@@ -37,6 +37,9 @@ struct PackingSource {
 inline constexpr int kIdentityDigits = 12;
 // d agreeing to this relative tolerance is "the same d" (identity and ranking).
 inline constexpr long double kSameDTolerance = 1e-12L;
+// Two polished d (>= 19 digits) this close are one value (the atlas's confirmations): a long
+// double's rounding is 1.1e-19, and two distinct values of one n never came within 1e-12.
+inline constexpr long double kSameValueTolerance = 1e-17L;
 struct PackingKey {
   long long n = 0;
   std::string graph_hash;
@@ -74,7 +77,16 @@ struct PackingRecord {
   long long runs() const;  // billiards runs over every source
   // The independent searches that reached it (issue 21): independent billiards runs and search
   // chains, plus one when a builder gives it; a table's count as read back.
-  long long confirmations() const;
+  long long own_confirmations() const;
+  // d_confirmations when the atlas has set it, else own_confirmations().
+  long long confirmations() const {
+    return d_confirmations >= 0 ? d_confirmations : own_confirmations();
+  }
+  // The atlas's count (issue 21): the confirmations of every packing of this n whose d agrees
+  // with this one's (kSameValueTolerance), summed. It confirms the value d(n), which distinct
+  // packings often share (Delta(k) - 1 with its vacancy anywhere, or a loose contact made or
+  // not). -1: not set.
+  long long d_confirmations = -1;
   bool from_builder() const {
     return !sources.empty() && sources.front().kind == PackingSource::Kind::Builder;
   }

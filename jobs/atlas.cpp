@@ -105,6 +105,7 @@ std::vector<PackingRecord> rows_of(long long n, std::vector<PackingRecord> candi
   for (auto& c : candidates)
     if (c.certified) certified.push_back(std::move(c));
   rank_records(n, certified);
+  count_value_confirmations(certified);  // d(n)'s, over every packing that has it
   std::vector<PackingRecord> rows;
   for (auto& c : certified) {
     const auto names = builders_of(c);

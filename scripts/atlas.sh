@@ -6,8 +6,9 @@
 # (n, seed) already in the database, so an interrupted run (Ctrl-C, a killed session) continues
 # where it stopped, and a finished one costs only the atlas step (~2 min).
 #
-# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress confirm prune atlas
-#        (default: all of them, in that order). Env: TRIPACK (build/tripack), THREADS (2), CONFIRM_RUNS (4).
+# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress confirm
+#        confirm-long prune atlas (default: all but confirm-long, in that order).
+#        Env: TRIPACK (build/tripack), THREADS (2), CONFIRM_RUNS (4), CONFIRM_LONG_RUNS (4).
 # Each step's wall and CPU time is appended to data/atlas-times.log; docs/atlas.md has the
 # totals measured on the project's 2-core machine.
 set -euo pipefail
@@ -77,9 +78,16 @@ for s in "${steps[@]}"; do
           --search-seconds 20 \
           --threads "$THREADS" --db "$DB"
       done ;;
+    confirm-long)  # where 20 s chains are too short (187: the search's median time to t187a is
+      # 111 CPU s, docs/performance.md): chains of 120 s (seeds 30001..) at every n listed in
+      # data/atlas-unconfirmed.csv; CONFIRM_LONG_RUNS (4) per n, raised in later rounds.
+      for n in $(awk -F, 'NR > 1 { print $1 }' data/atlas-unconfirmed.csv); do
+        step "confirm-long-$n" "$T" campaign --n "$n" --runs "${CONFIRM_LONG_RUNS:-4}" \
+          --seed 30001 --search-seconds 120 --threads "$THREADS" --db "$DB"
+      done ;;
     atlas)
       step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
         --out data --json ;;
-    *) echo "atlas.sh: unknown step '$s' (small large targeted stress confirm prune atlas)" >&2; exit 2 ;;
+    *) echo "atlas.sh: unknown step '$s' (small large targeted stress confirm confirm-long prune atlas)" >&2; exit 2 ;;
   esac
 done

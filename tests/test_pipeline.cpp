@@ -1,8 +1,6 @@
 // app/pipeline: analyze(build) for every class, conventions and input validation.
 #include <gtest/gtest.h>
 
-#include "core/ranking.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -15,8 +13,9 @@
 #include "constructors/registry.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
-#include "pipeline/analyze.hpp"
+#include "core/ranking.hpp"
 #include "jobs/billiards_search.hpp"
+#include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "sim/billiards.hpp"
 
@@ -432,6 +431,32 @@ TEST(Labels, SharedDGetsBondCountsAndSharedBondsGetSuffixes) {
   EXPECT_EQ(long_labels[25], "t17z");
   EXPECT_EQ(long_labels[26], "t17aa");
   EXPECT_EQ(std::set<std::string>(long_labels.begin(), long_labels.end()).size(), 50u);
+}
+
+// Issue 21: the atlas confirms a value d(n). Delta(k) - 1 has d = 1/(k-1) with its vacancy at any
+// site (distinct contact graphs), so runs that end in different vacancy places all reach d(n);
+// a packing whose d differs by 1e-13 (further apart than any two values of one n met: 8e-12 at
+// n = 74) is another value and confirms nothing of it.
+TEST(Labels, ConfirmationsCountEveryPackingOfTheSameValue) {
+  const auto record = [](long double d, long long runs, long long independent, bool builder) {
+    PackingRecord r;
+    r.d = PreciseReal(d);
+    r.sources.push_back({PackingSource::Kind::Billiards, "", 7, runs, independent});
+    if (builder) r.sources.push_back({PackingSource::Kind::Builder, "hexagonal-minus-one k=16"});
+    return r;
+  };
+  const long double d = 1.0L / 15;  // Delta(16) - 1 = 135
+  std::vector<PackingRecord> records{record(d, 0, 0, true), record(d * (1 + 2e-19L), 3, 2, false),
+                                     record(d, 1, 1, false), record(d * (1 - 1e-13L), 9, 9, false)};
+  EXPECT_EQ(records[1].confirmations(), 2);  // its own: a continued search does not confirm
+  count_value_confirmations(records);
+  EXPECT_EQ(records[0].confirmations(), 1 + 2 + 1);
+  EXPECT_EQ(records[1].confirmations(), 4);
+  EXPECT_EQ(records[2].confirmations(), 4);
+  EXPECT_EQ(records[3].confirmations(), 9);
+  EXPECT_EQ(records[0].own_confirmations(), 1);  // the builder's packing itself
+  count_value_confirmations(records);            // counted again: the same (own counts only)
+  EXPECT_EQ(records[2].confirmations(), 4);
 }
 
 TEST(BilliardsSearch, RankingDoesNotDependOnThreads) {
