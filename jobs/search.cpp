@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <unordered_set>
 
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
+#include "jobs/inflation.hpp"
 #include "jobs/runner.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
@@ -51,6 +53,10 @@ struct HoppingSettings {
   long long tie_interval = 4;   // at most one tie analysed per this many steps
   // A step is, this often, a fresh start (probe) that replaces the least dense member if denser.
   double probe_probability = 0.5;
+  // Where n is the Delta(2)-inflation of a smaller n (jobs/inflation.hpp), the share of the
+  // chain's work (estimated as steps times n^1.5) given to a search of that base n while it
+  // still improves, and after it has gone as many steps again without improving.
+  double base_share = 0.8, stale_base_share = 0.2;
 };
 
 // Relative d tolerance of "the target is reached": a polished d is good to ~1e-17, and two
@@ -144,10 +150,19 @@ class Chain {
         const ProgressFn& progress)
       : request_(request), rng_(seed), start_(start), progress_(progress) {
     summary_.seed = seed;
+    if (const std::optional<long long> base = inflation_base(request.n);
+        base && request.method == SearchMethod::BasinHopping) {
+      base_request_ = request;
+      base_request_.n = *base;
+      base_request_.target.reset();
+      base_request_.starts.clear();
+      base_ = std::make_unique<Chain>(base_request_, rng_(), start, no_progress_);
+    }
   }
 
   void run() {
     cpu_start_ = thread_cpu_seconds();
+    if (base_) base_->cpu_start_ = cpu_start_;
     for (const Packing& p : request_.starts)
       if (members_.size() < std::size_t(settings_.population)) add_member(p);
     while (!done()) {
@@ -176,10 +191,15 @@ class Chain {
       consider(run_billiards(scene, rng_).packing);
       return;
     }
+    if (base_ && base_turn()) {
+      base_step();
+      return;
+    }
     if (members_.size() < std::size_t(settings_.population)) {
       add_member(random_start());
       return;
     }
+    ++own_steps_;
     std::uniform_real_distribution<double> u01(0, 1);
     if (u01(rng_) < settings_.probe_probability) {
       probe();
@@ -210,6 +230,11 @@ class Chain {
     bool lattice = false;
     const Packing p = random_start(&lattice);
     consider(p, lattice);
+    offer(p);
+  }
+
+  // p takes the place of the least dense member when it is denser and no copy of a member.
+  void offer(const Packing& p) {
     std::size_t worst = 0;
     for (std::size_t j = 1; j < members_.size(); ++j)
       if (members_[j].packing.d < members_[worst].packing.d) worst = j;
@@ -217,6 +242,35 @@ class Chain {
     for (const Member& m : members_)
       if (std::abs(m.packing.d - p.d) < settings_.duplicate_d * p.d) return;
     members_[worst] = Member{p, 0};
+  }
+
+  // Whether this step goes to the base search: it is behind its share of the work so far, the
+  // cost of a step estimated as n^1.5 (billiards events per step grow ~n, each ~n^0.5 here).
+  bool base_turn() const {
+    const double base_cost = static_cast<double>(base_->summary_.steps) *
+                             std::pow(static_cast<double>(base_request_.n), 1.5);
+    const double own_cost =
+        static_cast<double>(own_steps_) * std::pow(static_cast<double>(request_.n), 1.5);
+    const bool stale = base_->summary_.steps > 2 * base_improved_at_ + 50;
+    const double share = stale ? settings_.stale_base_share : settings_.base_share;
+    return base_cost <= share * (base_cost + own_cost);
+  }
+
+  // A step of the base search; when it found a denser certified packing, its inflation is
+  // analysed and offered to the population.
+  void base_step() {
+    base_->step();
+    ++base_->summary_.steps;
+    if (!(base_->best_d_ > inflated_base_d_) || !base_->summary_.best) return;
+    inflated_base_d_ = base_->best_d_;
+    base_improved_at_ = base_->summary_.steps;
+    const std::optional<Packing> inflated = inflate_by_two(base_->summary_.best->pattern.packing);
+    if (!inflated || static_cast<long long>(inflated->size()) != request_.n) return;
+    consider(*inflated, true);
+    if (members_.size() < std::size_t(settings_.population))
+      members_.push_back({*inflated, 0});
+    else
+      offer(*inflated);
   }
 
   void add_member(const Packing& p) {
@@ -467,6 +521,12 @@ class Chain {
   std::unordered_set<std::size_t> analysed_graphs_;
   long long tie_analyses_ = 0;
   SearchChain summary_;
+  // The search of the base n when n is an inflation of it (else none).
+  SearchRequest base_request_;
+  ProgressFn no_progress_;
+  std::unique_ptr<Chain> base_;
+  long long own_steps_ = 0, base_improved_at_ = 0;
+  long double inflated_base_d_ = 0;
 };
 
 void check(const SearchRequest& request) {
