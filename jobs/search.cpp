@@ -173,6 +173,11 @@ class Chain {
       for (const Member& m : members_) analyse(m.packing, true);
     summary_.seconds = seconds_since(start_);
     summary_.cpu_seconds = thread_cpu_seconds() - cpu_start_;
+    if (base_) {
+      summary_.base_n = base_request_.n;
+      summary_.base_steps = base_->summary_.steps;
+      summary_.base_best_d = base_->summary_.best_d;
+    }
   }
 
   SearchChain summary() const { return summary_; }
@@ -598,8 +603,17 @@ SearchResult run_search(const SearchRequest& request) {
   ThreadExecutor(request.threads).run_items(items, nullptr);
   result.cancelled = cancelled(request.cancel);
   result.chains = chains;
+  // A chain meets one packing many times (a member walking a plateau, its final analysis): it
+  // counts once per chain, so that a packing's runs are the chains that reached it.
   std::vector<PackingRecord> all;
-  for (auto& records : found) all.insert(all.end(), records.begin(), records.end());
+  for (auto& records : found)
+    for (PackingRecord& record : merge_same_packings(std::move(records))) {
+      for (PackingSource& source : record.sources)
+        if (source.kind == PackingSource::Kind::Billiards)
+          source.runs = 1,
+          source.independent_runs = std::min<long long>(source.independent_runs, 1);
+      all.push_back(std::move(record));
+    }
   result.packings = merge_same_packings(std::move(all));
   rank_records(request.n, result.packings);
   if (!result.packings.empty()) {

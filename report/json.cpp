@@ -311,18 +311,24 @@ void render_json(std::ostream& out, const SearchResult& r, const RenderOptions& 
   j["packings"] = packings;
   json chains = json::array();
   for (const auto& c : r.chains)
-    chains.push_back({{"seed", c.seed},
-                      {"steps", c.steps},
-                      {"analyses", c.analyses},
-                      {"analysis_cpu_seconds", c.analysis_cpu_seconds},
-                      {"seconds", c.seconds},
-                      {"cpu_seconds", c.cpu_seconds},
-                      {"best_d", c.best_d.empty() ? json(nullptr) : json(c.best_d)},
-                      {"seconds_to_best", c.seconds_to_best},
-                      {"cpu_seconds_to_best", c.cpu_seconds_to_best},
-                      {"target_reached", c.target_reached},
-                      {"cpu_seconds_to_target",
-                       c.target_reached ? json(c.cpu_seconds_to_target) : json(nullptr)}});
+    chains.push_back(
+        {{"seed", c.seed},
+         {"steps", c.steps},
+         {"analyses", c.analyses},
+         {"analysis_cpu_seconds", c.analysis_cpu_seconds},
+         {"seconds", c.seconds},
+         {"cpu_seconds", c.cpu_seconds},
+         {"best_d", c.best_d.empty() ? json(nullptr) : json(c.best_d)},
+         {"seconds_to_best", c.seconds_to_best},
+         {"cpu_seconds_to_best", c.cpu_seconds_to_best},
+         {"target_reached", c.target_reached},
+         {"cpu_seconds_to_target",
+          c.target_reached ? json(c.cpu_seconds_to_target) : json(nullptr)},
+         {"base", c.base_n == 0 ? json(nullptr)
+                                : json{{"n", c.base_n},
+                                       {"steps", c.base_steps},
+                                       {"best_d", c.base_best_d.empty() ? json(nullptr)
+                                                                        : json(c.base_best_d)}}}});
   j["chains"] = chains;
   emit(out, j);
 }

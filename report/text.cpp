@@ -325,6 +325,11 @@ void render_text(std::ostream& out, const SearchResult& r, const RenderOptions&)
           "chain {}: target {} {}\n", c.seed, format_significant(*r.request.target, 18),
           c.target_reached ? fmt::format("reached after {:.3f} CPU s", c.cpu_seconds_to_target)
                            : "not reached");
+  for (const auto& c : r.chains)
+    if (c.base_n > 0)
+      out << fmt::format("chain {}: {} of its {} steps searched n = {} (best d = {}) to inflate\n",
+                         c.seed, c.base_steps, c.steps, c.base_n,
+                         c.base_best_d.empty() ? "none" : c.base_best_d);
   out << fmt::format("distinct packings ({}):\n", r.packings.size());
   for (const auto& x : r.packings)
     out << fmt::format("  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} chains)\n", x.label,

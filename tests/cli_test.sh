@@ -409,6 +409,8 @@ assert isinstance(best["d"], str) and len(re.sub(r"[^0-9]", "", best["d"]).lstri
 assert best["certified"] and a["packings"][0]["label"] == best["label"]
 strip = lambda j: [(p["d"], p["label"], p["bonds"]) for p in j["packings"]]
 assert strip(a) == strip(b)
+base = a["chains"][0]["base"]  # 12 = Delta(5) - 3 is the inflation of Delta(3) - 2 = 4
+assert base["n"] == 4 and 0 < base["steps"] <= 15
 PY
 then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --json"; fi
 # Random starts only (the explorer's search): reproducible too, and every chain's time is split

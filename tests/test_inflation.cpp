@@ -127,6 +127,9 @@ TEST(Search, ReachesTheInflationOfTheBaseSearch) {
     const jobs::SearchResult result = jobs::run_search(r);
     ASSERT_FALSE(result.packings.empty());
     EXPECT_TRUE(result.chains.at(0).target_reached) << seed;
+    EXPECT_EQ(result.chains.at(0).base_n, 43);
+    EXPECT_GT(result.chains.at(0).base_steps, 0);
+    EXPECT_LE(result.chains.at(0).base_steps, result.chains.at(0).steps);
     EXPECT_NEAR(static_cast<double>(result.packings.front().d.value() / target), 1.0, 1e-15)
         << seed;
   }

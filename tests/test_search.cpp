@@ -59,6 +59,9 @@ TEST(Search, ReachesTheProvenOptimumOfTen) {
   EXPECT_GE(result.seconds_to_best, 0);
   EXPECT_LE(result.seconds_to_best, result.seconds);
   for (const auto& chain : result.chains) ASSERT_TRUE(chain.best.has_value());
+  // A packing's runs are the chains that reached it, however often each met it.
+  for (const auto& p : result.packings) EXPECT_LE(p.runs(), 2) << p.label;
+  EXPECT_EQ(best.runs(), 2);
 }
 
 // Delta(5) - 2 = 13 disks: GL1995's class Delta(k+2)-2 at k = 3, d(13) = 3/(6 + sqrt6 + 2 sqrt3)
