@@ -78,8 +78,8 @@ for s in "${steps[@]}"; do
           --search-seconds 20 \
           --threads "$THREADS" --db "$DB"
       done ;;
-    confirm-long)  # where 20 s chains are too short (187: the search's median time to t187a is
-      # 111 CPU s, docs/performance.md): chains of 120 s (seeds 30001..) at every n listed in
+    confirm-long)  # where 20 s chains are too short (187: the search's median time to t187a was
+      # 111 CPU s before the inflation move, docs/performance.md): chains of 120 s (seeds 30001..) at every n listed in
       # data/atlas-unconfirmed.csv; CONFIRM_LONG_RUNS (4) per n, raised in later rounds.
       for n in $(awk -F, 'NR > 1 { print $1 }' data/atlas-unconfirmed.csv); do
         step "confirm-long-$n" "$T" campaign --n "$n" --runs "${CONFIRM_LONG_RUNS:-4}" \
