@@ -53,4 +53,10 @@ constexpr long long triangular(long long k) {
   return k * (k + 1) / 2;
 }
 
+// Site (i, j) of the k-row triangular lattice (row j from the bottom, i along it) as an index
+// 0..Delta(k)-1, row by row.
+constexpr std::size_t lattice_site(long long k, long long i, long long j) {
+  return static_cast<std::size_t>(j * k - j * (j - 1) / 2 + i);
+}
+
 }  // namespace tripack

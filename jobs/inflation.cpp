@@ -4,19 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "core/neighbours.hpp"
+
 namespace tripack::jobs {
 
 namespace {
 
-long long triangle_number(long long k) {
-  return k * (k + 1) / 2;
-}
-
-// Site (i, j) of the K-row lattice, row j from the bottom: its index and its position at
-// spacing 1.
-std::size_t site_index(long long rows, long long i, long long j) {
-  return static_cast<std::size_t>(j * rows - j * (j - 1) / 2 + i);
-}
+// Site (i, j) of the lattice at spacing 1.
 Vec2L site_position(long long i, long long j) {
   return {static_cast<long double>(i) + static_cast<long double>(j) / 2,
           static_cast<long double>(j) * kSqrt3 / 2};
@@ -28,19 +22,19 @@ std::optional<Packing> inflate_by_two(const Packing& base) {
   const long long n = static_cast<long long>(base.size());
   if (n < 3 || !(base.d > 0)) return std::nullopt;
   long long rows = 1;
-  while (triangle_number(rows) < n) ++rows;
+  while (triangular(rows) < n) ++rows;
   const long double side = 1 / base.d;  // L: the base triangle's side in diameters
   const long double to_lattice = static_cast<long double>(rows - 1);  // unit triangle -> sites
 
   // Which disk sits at which site (-1: a vacancy).
-  std::vector<long long> disk_at(static_cast<std::size_t>(triangle_number(rows)), -1);
+  std::vector<long long> disk_at(static_cast<std::size_t>(triangular(rows)), -1);
   std::vector<std::pair<long long, long long>> site_of(static_cast<std::size_t>(n));
   for (long long a = 0; a < n; ++a) {
     const Vec2L p = base.points[static_cast<std::size_t>(a)];
     const long long j = std::llround(p.y * to_lattice / (kSqrt3 / 2));
     const long long i = std::llround(p.x * to_lattice - static_cast<long double>(j) / 2);
     if (i < 0 || j < 0 || i + j >= rows) return std::nullopt;
-    long long& at = disk_at[site_index(rows, i, j)];
+    long long& at = disk_at[lattice_site(rows, i, j)];
     if (at >= 0) return std::nullopt;
     at = a;
     site_of[static_cast<std::size_t>(a)] = {i, j};
@@ -66,8 +60,8 @@ std::optional<Packing> inflate_by_two(const Packing& base) {
       for (const auto& edge : kEdges) {
         const long long i2 = i + edge[0], j2 = j + edge[1];
         if (i2 < 0 || i2 + j2 >= rows) continue;
-        const long long a = disk_at[site_index(rows, i, j)];
-        const long long b = disk_at[site_index(rows, i2, j2)];
+        const long long a = disk_at[lattice_site(rows, i, j)];
+        const long long b = disk_at[lattice_site(rows, i2, j2)];
         if (a < 0 && b < 0) continue;
         // One spacing from one end towards the other: the base contact between the ends is kept
         // whole on that side (the middle would halve a tilted one). The end nearer its lattice
@@ -83,24 +77,20 @@ std::optional<Packing> inflate_by_two(const Packing& base) {
       }
 
   const long double new_side = side + static_cast<long double>(rows - 1);
+  // Every disk has a neighbour within about one diameter; overlapping ones are closer still.
+  const long double closest = min_pair_distance(inflated, 2);
   Packing result;
-  long double closest = std::numeric_limits<long double>::max();
-  for (std::size_t a = 0; a < inflated.size(); ++a)
-    for (std::size_t b = a + 1; b < inflated.size(); ++b) {
-      const long double dx = inflated[a].x - inflated[b].x, dy = inflated[a].y - inflated[b].y;
-      closest = std::min(closest, dx * dx + dy * dy);
-    }
   for (const Vec2L& p : inflated) result.points.push_back({p.x / new_side, p.y / new_side});
-  result.d = std::sqrt(closest) / new_side;
+  result.d = closest / new_side;
   return result;
 }
 
 std::optional<long long> inflation_base(long long n) {
   long long rows = 1;
-  while (triangle_number(rows) < n) ++rows;
-  const long long vacancies = triangle_number(rows) - n;
+  while (triangular(rows) < n) ++rows;
+  const long long vacancies = triangular(rows) - n;
   if (rows % 2 == 0 || vacancies % 2 == 0 || vacancies < 3) return std::nullopt;
-  const long long base = triangle_number((rows + 1) / 2) - (vacancies + 1) / 2;
+  const long long base = triangular((rows + 1) / 2) - (vacancies + 1) / 2;
   if (base < 3) return std::nullopt;
   return base;
 }

@@ -323,11 +323,11 @@ class Chain {
   Packing lattice_start() {
     const long long n = request_.n;
     long long k = 1;
-    while (k * (k + 1) / 2 < n) ++k;
+    while (triangular(k) < n) ++k;
     if (k < 2) return run_billiards(growth_scene({}, 0), rng_).packing;
     const long double spacing = 1.0L / (k - 1);
-    const long long vacancies = k * (k + 1) / 2 - n;
-    std::vector<bool> vacant(static_cast<std::size_t>(k * (k + 1) / 2), false);
+    const long long vacancies = triangular(k) - n;
+    std::vector<bool> vacant(static_cast<std::size_t>(triangular(k)), false);
     std::uniform_real_distribution<double> u01(0, 1);
     if (!(u01(rng_) < settings_.vacancy_path_probability && vacancy_path(k, vacancies, vacant))) {
       std::vector<std::size_t> order(vacant.size());
@@ -339,17 +339,12 @@ class Chain {
     std::vector<Vec2L> sites;
     for (long long j = 0; j < k; ++j)
       for (long long i = 0; i + j < k; ++i)
-        if (!vacant[site_index(k, i, j)])
+        if (!vacant[lattice_site(k, i, j)])
           sites.push_back({(i + j / 2.0L) * spacing, j * spacing * kSqrt3 / 2});
     Packing start;
     start.points = std::move(sites);
     start.d = spacing;
     return run_billiards(growth_scene(start, shrunk_d(spacing)), rng_).packing;
-  }
-
-  // Site (i, j) of the k-row lattice (row j from the bottom, i along it) as an index.
-  static std::size_t site_index(long long k, long long i, long long j) {
-    return static_cast<std::size_t>(j * k - j * (j - 1) / 2 + i);
   }
 
   // Vacancies along a rough lattice line: a walk from a random site (path_from_side of the time
@@ -377,8 +372,9 @@ class Chain {
       }
       const int heading = direction(rng_);
       long long placed = 0;
-      while (placed < vacancies && i >= 0 && j >= 0 && i + j < k && !vacant[site_index(k, i, j)]) {
-        vacant[site_index(k, i, j)] = true;
+      while (placed < vacancies && i >= 0 && j >= 0 && i + j < k &&
+             !vacant[lattice_site(k, i, j)]) {
+        vacant[lattice_site(k, i, j)] = true;
         ++placed;
         const double u = u01(rng_);
         const int side = u01(rng_) < 0.5 ? 1 : 5;  // turn left or right

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/io.hpp"
+#include "core/neighbours.hpp"
 #include "jobs/inflation.hpp"
 #include "jobs/search.hpp"
 #include "pipeline/analyze.hpp"
@@ -22,15 +23,6 @@ Packing atlas_packing(const std::string& label) {
   p.points = file.points;
   p.d = file.declared_d.value();
   return p;
-}
-
-long double min_distance(const Packing& p) {
-  long double closest = 1e9L;
-  for (std::size_t a = 0; a < p.size(); ++a)
-    for (std::size_t b = a + 1; b < p.size(); ++b)
-      closest = std::min(closest,
-                         std::hypot(p.points[a].x - p.points[b].x, p.points[a].y - p.points[b].y));
-  return closest;
 }
 
 // The lattice Delta(K) with two adjacent sites vacant inflates to the lattice Delta(2K - 1)
@@ -50,7 +42,8 @@ TEST(Inflation, InflatesTheLatticeToTheLattice) {
     ASSERT_EQ(static_cast<long long>(inflated->size()), big * (big + 1) / 2 - 3);
     const long double spacing = 1.0L / static_cast<long double>(big - 1);
     EXPECT_NEAR(static_cast<double>(inflated->d), static_cast<double>(spacing), 1e-15);
-    EXPECT_NEAR(static_cast<double>(min_distance(*inflated)), static_cast<double>(spacing), 1e-15);
+    EXPECT_NEAR(static_cast<double>(min_pair_distance(inflated->points, 1)),
+                static_cast<double>(spacing), 1e-15);
     for (const Vec2L& p : inflated->points) {
       const long double j = p.y / (spacing * kSqrt3 / 2), i = p.x / spacing - j / 2;
       EXPECT_NEAR(static_cast<double>(j), std::round(static_cast<double>(j)), 1e-12);
