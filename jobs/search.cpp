@@ -12,8 +12,8 @@
 
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "jobs/inflation.hpp"
 #include "jobs/runner.hpp"
+#include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
@@ -53,7 +53,7 @@ struct HoppingSettings {
   long long tie_interval = 4;   // at most one tie analysed per this many steps
   // A step is, this often, a fresh start (probe) that replaces the least dense member if denser.
   double probe_probability = 0.5;
-  // Where n is the Delta(2)-inflation of a smaller n (jobs/inflation.hpp), the share of the
+  // Where n is the Delta(2)-inflation of a smaller n (patterns/inflation.hpp), the share of the
   // chain's work (estimated as steps times n^1.5) given to a search of that base n while it
   // still improves, and after it has gone as many steps again without improving.
   double base_share = 0.8, stale_base_share = 0.2;
@@ -150,7 +150,7 @@ class Chain {
         const ProgressFn& progress)
       : request_(request), rng_(seed), start_(start), progress_(progress) {
     summary_.seed = seed;
-    if (const std::optional<long long> base = inflation_base(request.n);
+    if (const std::optional<long long> base = patterns::inflation_base(request.n);
         base && request.method == SearchMethod::BasinHopping) {
       base_request_ = request;
       base_request_.n = *base;
@@ -269,7 +269,8 @@ class Chain {
     if (!(base_->best_d_ > inflated_base_d_) || !base_->summary_.best) return;
     inflated_base_d_ = base_->best_d_;
     base_improved_at_ = base_->summary_.steps;
-    const std::optional<Packing> inflated = inflate_by_two(base_->summary_.best->pattern.packing);
+    const std::optional<Packing> inflated =
+        patterns::inflate_by_two(base_->summary_.best->pattern.packing);
     if (!inflated || static_cast<long long>(inflated->size()) != request_.n) return;
     consider(*inflated, true);
     if (members_.size() < std::size_t(settings_.population))

@@ -65,7 +65,7 @@ struct SearchChain {
   bool target_reached = false;
   double seconds_to_target = 0, cpu_seconds_to_target = 0;  // when target_reached
   std::optional<PackingRecord> best;                        // the chain's best certified packing
-  // Where n is an inflation (jobs/inflation.hpp): the base n searched alongside, the steps of
+  // Where n is an inflation (patterns/inflation.hpp): the base n searched alongside, the steps of
   // `steps` that went to it, and its best certified d ("" if none). base_n 0: none.
   long long base_n = 0, base_steps = 0;
   std::string base_best_d;

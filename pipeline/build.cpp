@@ -3,11 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
+#include "analysis/compare.hpp"
 #include "core/io.hpp"
 #include "core/timing.hpp"
-#include "analysis/compare.hpp"
 
 namespace tripack::pipeline {
 
@@ -41,20 +42,23 @@ double BuildResult::seconds() const {
          (analysis ? analysis->times.total() : 0.0);
 }
 
-BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
-                              const BuildSettings& settings) {
+namespace {
+
+void tell_stage(const BuildSettings& settings, const char* stage) {
+  if (!settings.progress) return;
+  Progress p;
+  p.stage = stage;
+  settings.progress(p);
+}
+
+// Construct, polish the builder's bonds, the exact check: what every candidate of build --n needs.
+BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& request,
+                             const BuildSettings& settings) {
   BuildResult b;
-  b.digits = settings.digits;
-  auto tell = [&](const char* stage) {
-    if (!settings.progress) return;
-    Progress p;
-    p.stage = stage;
-    settings.progress(p);
-  };
-  tell("construct");
+  tell_stage(settings, "construct");
   b.pattern = timed(b.times.construct, [&] { return build_pattern(catalogue, request); });
   if (settings.polish) {
-    tell("polish of the builder's bonds");
+    tell_stage(settings, "polish of the builder's bonds");
     b.polish = timed(b.polish_seconds, [&] {
       return polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
     });
@@ -64,8 +68,14 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
           fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
                       static_cast<double>(b.polish.max_residual), b.polish.iterations));
   }
-  if (b.pattern.exact) tell("exact check");
+  if (b.pattern.exact) tell_stage(settings, "exact check");
   if (b.pattern.exact) b.exact = timed(b.times.exact, [&] { return exact_check(b.pattern); });
+  return b;
+}
+
+// The rest with `settings`: certificate (or the multiprecision polish alone), counts, record.
+void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSettings& settings) {
+  b.digits = settings.digits;
   const bool certify =
       settings.certify && settings.polish && b.pattern.packing.size() <= kCertifyLimit;
   b.certify_skipped = settings.certify && !certify;
@@ -75,7 +85,7 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
     options.progress = settings.progress;
     b.analysis = analyze_packing(b.pattern.packing, options);
   } else if (settings.digits > kLongDoubleDigits) {
-    tell("multiprecision polish");
+    tell_stage(settings, "multiprecision polish");
     b.multiprecision = timed(b.times.multiprecision, [&] {
       return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,
                                    settings.digits);
@@ -86,6 +96,23 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
   b.bonds_expected = info.rigid ? catalogue.bonds_of(info, pv.k, pv.p, pv.variant) : std::nullopt;
   b.rattlers_expected = catalogue.rattlers_of(info, pv.k, pv.p, pv.variant);
   b.record = record_of_build(b);
+}
+
+// Ranks candidates like the atlas's labels (docs/conventions.md): larger d first; the same d
+// (relative 1e-15: polished candidates agree to ~1e-19, distinct packings of one n differ by
+// 1e-12 or more in the atlas) with more bonds first (twin's full packing over its rattler one).
+bool denser_or_more_bonded(const Pattern& a, const Pattern& b) {
+  const long double da = a.packing.d, db = b.packing.d;
+  if (std::fabs(da - db) <= 1e-15L * db) return a.bonds.size() > b.bonds.size();
+  return da > db;
+}
+
+}  // namespace
+
+BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
+                              const BuildSettings& settings) {
+  BuildResult b = construct_member(catalogue, request, settings);
+  finish_build(catalogue, b, settings);
   return b;
 }
 
@@ -94,10 +121,9 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
   if (members.empty())
     throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
   BestBuild result;
-  BuildSettings quick = settings;
-  quick.certify = false;  // rank the candidates first, certify only the winner
-  quick.digits = 15;
-  std::optional<BuildCandidate> best;
+  // Rank the candidates as built and polished; only the winner is certified (its construction,
+  // an enumeration for some classes, is not repeated).
+  std::optional<BuildResult> best;
   // Every variant: the default is not always the best (odd-ripple's other modification wins at
   // k = 2..4, its depressed cage from k = 5); equal d keeps the first (the default).
   for (const auto& m : members) {
@@ -107,13 +133,13 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
     std::stable_partition(variants.begin(), variants.end(),
                           [&](const std::string& v) { return v == first; });
     for (const auto& v : variants) {
-      const BuildResult b = build_and_certify(catalogue, {m.cls->id, m.k, m.p, v}, quick);
+      BuildResult b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings);
       result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d});
-      if (!best || b.pattern.packing.d > best->d) best = result.candidates.back();
+      if (!best || denser_or_more_bonded(b.pattern, best->pattern)) best = std::move(b);
     }
   }
-  const Provenance& win = best->member;
-  result.best = build_and_certify(catalogue, {win.class_id, win.k, win.p, win.variant}, settings);
+  finish_build(catalogue, *best, settings);
+  result.best = std::move(*best);
   return result;
 }
 

@@ -1,4 +1,4 @@
-// The Delta(2)-inflation (jobs/inflation.hpp; docs/findings.md §3) and the search's use of it.
+// The Delta(2)-inflation (patterns/inflation.hpp; docs/findings.md §3) and the search's use of it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,8 +7,8 @@
 
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
-#include "jobs/inflation.hpp"
 #include "jobs/search.hpp"
+#include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
 
 namespace tripack {
@@ -36,7 +36,7 @@ TEST(Inflation, InflatesTheLatticeToTheLattice) {
       for (long long i = 0; i + j < rows; ++i)
         if (!(j == 1 && (i == 1 || i == 2)))  // vacancies (1, 1) and (2, 1)
           base.points.push_back({(i + j / 2.0L) * base.d, j * base.d * kSqrt3 / 2});
-    const auto inflated = jobs::inflate_by_two(base);
+    const auto inflated = patterns::inflate_by_two(base);
     ASSERT_TRUE(inflated);
     const long long big = 2 * rows - 1;
     ASSERT_EQ(static_cast<long long>(inflated->size()), big * (big + 1) / 2 - 3);
@@ -62,7 +62,7 @@ TEST(Inflation, GivesTheClosedFormsOfTwelveAndTwentyFive) {
   const std::pair<const char*, double> cases[] = {{"t4a", 1 / (2 + std::sqrt(3.0))},
                                                   {"t8a", 1 / (4 + std::sqrt(11.0 / 3))}};
   for (const auto& [label, d] : cases) {
-    const auto inflated = jobs::inflate_by_two(atlas_packing(label));
+    const auto inflated = patterns::inflate_by_two(atlas_packing(label));
     ASSERT_TRUE(inflated) << label;
     EXPECT_NEAR(static_cast<double>(inflated->d), d, 1e-15) << label;
     const PackingRecord record = pipeline::record_of(pipeline::analyze_packing(*inflated, {}));
@@ -78,7 +78,7 @@ TEST(Inflation, InflatesTheAtlasBestsToTheAtlasBests) {
   const std::pair<const char*, const char*> cases[] = {
       {"t26a", "t88a"}, {"t43a", "t150a"}, {"t53a", "t187a"}, {"t12a", "t40a"}, {"t51a", "t183a"}};
   for (const auto& [base, inflated_best] : cases) {
-    const auto inflated = jobs::inflate_by_two(atlas_packing(base));
+    const auto inflated = patterns::inflate_by_two(atlas_packing(base));
     ASSERT_TRUE(inflated) << base;
     const Packing best = atlas_packing(inflated_best);
     ASSERT_EQ(inflated->size(), best.size()) << base;
@@ -93,9 +93,9 @@ TEST(Inflation, InflatesTheAtlasBestsToTheAtlasBests) {
 TEST(Inflation, NamesTheBaseOfAnInflatedN) {
   const std::pair<long long, long long> bases[] = {{12, 4},   {25, 8},   {40, 12},  {61, 18},
                                                    {150, 43}, {187, 53}, {183, 51}, {144, 40}};
-  for (const auto& [n, base] : bases) EXPECT_EQ(jobs::inflation_base(n), base) << n;
+  for (const auto& [n, base] : bases) EXPECT_EQ(patterns::inflation_base(n), base) << n;
   for (long long n : {10, 11, 26, 53, 102, 134, 166, 190})
-    EXPECT_FALSE(jobs::inflation_base(n)) << n;
+    EXPECT_FALSE(patterns::inflation_base(n)) << n;
 }
 
 // A lattice that does not round site by site (two disks on one site) is refused.
@@ -103,7 +103,7 @@ TEST(Inflation, RefusesAPackingOffTheLattice) {
   Packing p;
   p.d = 0.5L;
   p.points = {{0, 0}, {0.01L, 0}, {1, 0}, {0.5L, kSqrt3 / 2}};
-  EXPECT_FALSE(jobs::inflate_by_two(p));
+  EXPECT_FALSE(patterns::inflate_by_two(p));
 }
 
 // The search at n = 150 = Delta(17) - 3 searches 43 = Delta(9) - 2 alongside and reaches the

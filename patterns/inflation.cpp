@@ -1,4 +1,4 @@
-#include "jobs/inflation.hpp"
+#include "patterns/inflation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include "core/neighbours.hpp"
 
-namespace tripack::jobs {
+namespace tripack::patterns {
 
 namespace {
 
@@ -95,4 +95,4 @@ std::optional<long long> inflation_base(long long n) {
   return base;
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack::patterns

@@ -17,7 +17,7 @@
 
 #include "core/packing.hpp"
 
-namespace tripack::jobs {
+namespace tripack::patterns {
 
 // The inflation of `base`, or none when base is not near a lattice Delta(K) (two disks round
 // to one site, or one falls outside) or has fewer than 3 disks. The inflation of an atlas best
@@ -32,4 +32,4 @@ std::optional<Packing> inflate_by_two(const Packing& base);
 // and 144 (m = 5) (docs/findings.md §3). None for other n.
 std::optional<long long> inflation_base(long long n);
 
-}  // namespace tripack::jobs
+}  // namespace tripack::patterns
