@@ -133,11 +133,23 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
     std::stable_partition(variants.begin(), variants.end(),
                           [&](const std::string& v) { return v == first; });
     for (const auto& v : variants) {
-      BuildResult b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings);
-      result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d});
+      BuildResult b;
+      try {
+        b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings);
+      } catch (const std::runtime_error& e) {
+        // A member whose construction fails (an inflated-segment base that does not round onto
+        // its lattice) is no candidate; the others still are.
+        result.candidates.push_back({{m.cls->id, m.k, m.p, v}, 0, e.what()});
+        if (!best && &m == &members.back() && &v == &variants.back()) throw;
+        continue;
+      }
+      result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d, ""});
       if (!best || denser_or_more_bonded(b.pattern, best->pattern)) best = std::move(b);
     }
   }
+  if (!best)
+    throw std::runtime_error("no member of the catalogue containing n = " + std::to_string(n) +
+                             " could be built");
   finish_build(catalogue, *best, settings);
   result.best = std::move(*best);
   return result;

@@ -1,5 +1,5 @@
-// Build + polish + certify a class member (docs/certified.md steps 1-4), and the catalogue's best member
-// for a given n. Returns results; prints nothing.
+// Build + polish + certify a class member (docs/certified.md steps 1-4), and the catalogue's best
+// member for a given n. Returns results; prints nothing.
 #pragma once
 
 #include <optional>
@@ -56,7 +56,7 @@ struct BuildResult {
   // certificate, the exact check where one ran.
   bool verified() const;
   std::string d_string(int digits) const { return record.d.str(digits); }
-  double seconds() const;                  // every stage
+  double seconds() const;  // every stage
 };
 
 BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
@@ -66,6 +66,7 @@ BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& re
 struct BuildCandidate {
   Provenance member;
   long double d = 0;
+  std::string error;  // why its construction failed (then d = 0 and it is not ranked)
 };
 struct BestBuild {
   BuildResult best;

@@ -195,7 +195,10 @@ void render_json(std::ostream& out, const BestBuild& b, const RenderOptions& o) 
     j["candidates"] = json::array();
     for (const auto& c : b.candidates) {
       json x = member_json(c.member);
-      x["d"] = decimal17(c.d);
+      if (c.error.empty())
+        x["d"] = decimal17(c.d);
+      else
+        x["error"] = c.error;
       j["candidates"].push_back(x);
     }
   }

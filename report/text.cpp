@@ -237,7 +237,9 @@ void render_text(std::ostream& out, const Classification& c, const RenderOptions
 void render_text(std::ostream& out, const BestBuild& b, const RenderOptions&) {
   for (const auto& c : b.candidates)
     line(out, "candidate",
-         fmt::format("{:<40} d = {}", member_name(c.member), format_significant(c.d, 15)));
+         c.error.empty()
+             ? fmt::format("{:<40} d = {}", member_name(c.member), format_significant(c.d, 15))
+             : fmt::format("{:<40} not built: {}", member_name(c.member), c.error));
   build_lines(out, b.best);
 }
 

@@ -11,12 +11,13 @@
 #include <map>
 #include <string>
 
-#include "pipeline/catalogue_checks.hpp"
+#include "constructors/registry.hpp"
 #include "jobs/atlas.hpp"
 #include "jobs/atlas_files.hpp"
 #include "jobs/campaign.hpp"
-#include "constructors/registry.hpp"
 #include "jobs/explore.hpp"
+#include "pipeline/analyze.hpp"
+#include "pipeline/catalogue_checks.hpp"
 
 namespace tripack {
 namespace {
@@ -44,8 +45,14 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
     const long long n = static_cast<long long>(built.packing.size());
     if (n < 2) continue;
     ASSERT_TRUE(best.count(n)) << "n = " << n << " is not in the atlas";
-    EXPECT_GE(best[n], built.packing.d * (1 - 1e-14L))
-        << member.class_id << " k=" << member.k << " p=" << member.p << " (n = " << n << ")";
+    // A builder above the atlas must be one the atlas could not take: not certified (the
+    // vacancy-segment members at 169, 188 and 197 are 1e-11 to 4e-14 above it, uncertified:
+    // docs/findings.md §11).
+    if (built.packing.d * (1 - 1e-14L) > best[n]) {
+      EXPECT_FALSE(pipeline::analyze_packing(built.packing, {}).certified())
+          << member.class_id << " k=" << member.k << " p=" << member.p << " (n = " << n
+          << "): a certified builder above the atlas";
+    }
     ++members;
   }
   EXPECT_GT(members, 60);
@@ -89,9 +96,10 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
     EXPECT_GE(std::stold(best.d.str()), std::stold(b.d) * (1 - 1e-20L)) << b.member;
   }
   // t12a = 4Delta(2): the builders of four classes and the campaign, one row.
-  const auto& t12a = atlas.rows[static_cast<std::size_t>(
-      std::find_if(atlas.rows.begin(), atlas.rows.end(), [](const auto& r) { return r.n() == 12; }) -
-      atlas.rows.begin())];
+  const auto& t12a =
+      atlas.rows[static_cast<std::size_t>(std::find_if(atlas.rows.begin(), atlas.rows.end(),
+                                                       [](const auto& r) { return r.n() == 12; }) -
+                                          atlas.rows.begin())];
   EXPECT_EQ(t12a.label.substr(0, 4), "t12a");
   EXPECT_NE(t12a.source_text().find("builder four-delta k=2"), std::string::npos)
       << t12a.source_text();

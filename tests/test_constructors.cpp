@@ -386,9 +386,12 @@ TEST(SparseRows, NearDegenerateGapsAreNotBonds) {
 
 TEST(Classes, EveryBuilderIsValidAndMatchesTheCatalogueUpToK12) {
   for (const auto& c : catalogue().classes()) {
-    const long p_max = c.has_p ? 5 : 0;
-    for (long p = c.has_p ? 1 : 0; p <= p_max; ++p) {
+    const long p_max = c.has_p ? c.p_min + 4 : 0;
+    for (long p = c.has_p ? c.p_min : 0; p <= p_max; ++p) {
       for (long k = c.k_min; k <= 12 && (!c.k_max || k <= c.k_max); ++k) {
+        // The discovered classes relax every vacancy segment of their lattice: above n = 150 a
+        // member costs seconds (tests/test_vacancy_segment.cpp builds larger ones).
+        if (c.claim_status == "discovered" && catalogue().n_of(c, k, p) > 150) continue;
         for (const auto& v : catalogue().variants_at(c, k).empty()
                                  ? std::vector<std::string>{""}
                                  : catalogue().variants_at(c, k)) {

@@ -45,8 +45,11 @@ TEST(Pipeline, AnalyzeOfBuildFindsTheBuildersBondsAndCertifiesEveryClass) {
   // (Delta(k)-1 with its corner removed is jammed too: the LP test finds no motion.)
   int cases = 0;
   for (const auto& c : catalogue().classes()) {
-    for (long p = c.has_p ? 1 : 0; p <= (c.has_p ? 3 : 0); ++p) {
+    for (long p = c.has_p ? c.p_min : 0; p <= (c.has_p ? c.p_min + 2 : 0); ++p) {
       for (long k = c.k_min; k <= 8 && (!c.k_max || k <= c.k_max); ++k) {
+        // The discovered classes relax every vacancy segment of their lattice: above n = 150 a
+        // member costs seconds (tests/test_vacancy_segment.cpp builds larger ones).
+        if (c.claim_status == "discovered" && catalogue().n_of(c, k, p) > 150) continue;
         auto variants = catalogue().variants_at(c, k);
         if (variants.empty()) variants.push_back("");
         for (const auto& v : variants) {

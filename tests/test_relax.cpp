@@ -76,8 +76,11 @@ TEST(Relax, PerturbedPackingsReturnToTheSameDAndContactGraph) {
   // 1e-14 relative and the same packing (contact graph and positions) as the builder's.
   int cases = 0;
   for (const auto& c : catalogue().classes()) {
-    for (long p = c.has_p ? 1 : 0; p <= (c.has_p ? 3 : 0); ++p) {
+    for (long p = c.has_p ? c.p_min : 0; p <= (c.has_p ? c.p_min + 2 : 0); ++p) {
       for (long k = c.k_min; k <= c.k_min + 2 && (!c.k_max || k <= c.k_max); ++k) {
+        // The discovered classes relax every vacancy segment of their lattice: above n = 150 a
+        // member costs seconds (tests/test_vacancy_segment.cpp builds larger ones).
+        if (c.claim_status == "discovered" && catalogue().n_of(c, k, p) > 150) continue;
         auto variants = catalogue().variants_at(c, k);
         if (variants.empty()) variants.push_back("");
         for (const auto& v : variants) {

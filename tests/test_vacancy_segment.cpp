@@ -1,0 +1,80 @@
+// The discovered classes vacancy-segment and inflated-segment (patterns/; docs/findings.md §11):
+// lattices with a straight vacancy segment, relaxed, and their Delta(2)-inflations, built for any
+// k without reading a stored packing, reproduce the atlas's bests.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "constructors/catalogue.hpp"
+#include "patterns/vacancy_lattice.hpp"
+#include "pipeline/build.hpp"
+
+namespace tripack {
+namespace {
+
+const Catalogue& catalogue() {
+  static const Catalogue c = Catalogue::load(Catalogue::default_path());
+  return c;
+}
+
+struct AtlasBest {
+  const char* class_id;
+  long k, p;
+  const char* label;
+  long double d;  // data/atlas.csv, rank 1 (30 digits; each reached by >= 3 independent searches)
+  std::size_t bonds, rattlers;
+};
+
+void expect_reproduces(const AtlasBest& best) {
+  const auto b = pipeline::build_and_certify(catalogue(), {best.class_id, best.k, best.p, ""}, {});
+  ASSERT_TRUE(b.analysis) << best.label;
+  EXPECT_TRUE(b.verified()) << best.label << ": " << b.analysis->status();
+  // 1e-15: the tolerance; the long double polish resolves d to ~1e-19.
+  EXPECT_LT(std::fabs(b.record.d.value() / best.d - 1), 1e-15L) << best.label;
+  EXPECT_EQ(b.analysis->pattern.bonds.size(), best.bonds) << best.label;
+  EXPECT_EQ(b.analysis->pattern.rattlers.size(), best.rattlers) << best.label;
+}
+
+TEST(VacancySegment, ReproducesTheWinnersOfDeltaKPlusTwoMinusTwo) {
+  // GL1995 could not confirm a winner for Delta(k+2)-2; docs/class6.md found three competing
+  // patterns (C2: t26a, S: t43a, C4: t53a). All are a divacancy, placed differently.
+  expect_reproduces({"vacancy-segment", 5, 2, "t26a", 0.166738399395270910908913620962L, 63, 0});
+  expect_reproduces({"vacancy-segment", 7, 2, "t43a", 0.125004280307976895533502089878L, 108, 0});
+  expect_reproduces({"vacancy-segment", 8, 2, "t53a", 0.111111621125073635677535212102L, 135, 0});
+}
+
+TEST(VacancySegment, ReproducesBestsInNoClassOfThePaper) {
+  // n = 33 (one of GL1995's open squares) and 30 (six vacancies on one line).
+  expect_reproduces({"vacancy-segment", 5, 3, "t33a", 0.143447408371201134347767339842L, 79, 0});
+  expect_reproduces({"vacancy-segment", 2, 6, "t30a", 0.150761500215427519456797490307L, 73, 1});
+}
+
+TEST(InflatedSegment, ReproducesDeltaTwoKPlusThreeMinusThree) {
+  // docs/findings.md §3: the best of Delta(2k+3)-3 is the inflation of the best Delta(k+2)-2.
+  expect_reproduces({"inflated-segment", 5, 2, "t88a", 0.0833512626571264412680038067303L, 234, 0});
+  expect_reproduces(
+      {"inflated-segment", 6, 2, "t117a", 0.0714316972661115803806982552683L, 315, 0});
+}
+
+TEST(VacancySegment, SegmentsAreCountedOncePerSymmetryOrbit) {
+  // Delta(3): 9 segments of 2 sites, in two orbits (the 6 touching a corner site, the 3 in the
+  // middle). Delta(4), 3 sites: the 3 sides and the 3 middle lines, two orbits.
+  EXPECT_EQ(patterns::straight_segments(3, 2).size(), 2u);
+  EXPECT_EQ(patterns::straight_segments(4, 3).size(), 2u);
+  // Every listed segment is in an orbit of its own.
+  const auto segments = patterns::straight_segments(7, 2);
+  std::set<std::vector<patterns::Site>> keys;
+  for (const auto& s : segments) keys.insert(patterns::canonical_vacancies(7, s));
+  EXPECT_EQ(keys.size(), segments.size());
+}
+
+TEST(VacancySegment, RefusesASegmentThatFillsALine) {
+  EXPECT_THROW(patterns::best_vacancy_segment(4, 4), std::invalid_argument);
+  EXPECT_THROW(patterns::lattice_with_vacancies(4, {{3, 1}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tripack
