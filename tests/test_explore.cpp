@@ -11,8 +11,8 @@
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
-#include "pipeline/analyze.hpp"
 #include "jobs/explore.hpp"
+#include "pipeline/analyze.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "report/explore_report.hpp"
 
@@ -65,7 +65,10 @@ TEST(Explore, OnlyTheBestPackingOfAProvenNIsMarkedProven) {
   int at13 = 0;
   for (const auto& r : small_exploration().packings)
     if (r.n() == 13 && r.from_builder()) {
-      EXPECT_EQ(r.proven_optimal, r.pattern.provenance.class_id == "sparse-rows") << r.pattern.provenance.class_id;
+      // vacancy-segment k=3 p=2 (Delta(5) minus a divacancy, relaxed) is t13a too.
+      EXPECT_EQ(r.proven_optimal, r.pattern.provenance.class_id == "sparse-rows" ||
+                                      r.pattern.provenance.class_id == "vacancy-segment")
+          << r.pattern.provenance.class_id;
       ++at13;
     }
   EXPECT_GE(at13, 2);
