@@ -51,8 +51,10 @@ expect_error "matrix without --p" "needs --p" build matrix --k 2
 expect_error "p on a class without p" "takes no --p" build four-delta --k 2 --p 3
 expect_error "bad variant" "no variant 'cavity-5'" build twin --k 3 --variant cavity-5
 expect_error "missing --k" "needs --k" build four-delta
-expect_error "N in no class" "no class of the catalogue contains n = 23" classify 23
-expect_error "build --n in no class" "contains n = 32" build --n 32
+# Every n >= 2 is in a class since vacancy-segment (n = Delta(K) - m, 2 <= m < K) joined the
+# hexagonal ones: only n = 1 is in none.
+expect_error "N in no class" "no class of the catalogue contains n = 1" classify 1
+expect_error "build --n in no class" "contains n = 1" build --n 1
 expect_error "malformed classes.yaml" "malformed_classes.yaml" --catalogue "$DATA/malformed_classes.yaml" classes
 expect_error "classes.yaml whose n does not grow" "does not grow with k" --catalogue "$DATA/n_not_growing_classes.yaml" classify 22
 expect_error "missing classes.yaml" "cannot read catalogue" --catalogue /nonexistent.yaml classes
@@ -60,9 +62,9 @@ expect_error "non-numeric k" "k" build four-delta --k two
 expect_error "bad k range" "--k expects" check-formula four-delta --k 3..x
 expect_error "unwritable output" "cannot open" build four-delta --k 2 -o /nonexistent/dir/out.txt
 
-# classify 12: exactly the four members of the issue, in catalogue order.
+# classify 12: the four members of GL1995 sec. 7, in catalogue order, and 12 = Delta(5) - 3.
 out=$("$TRIPACK" classify 12)
-want=$'four-delta k=2   (4Delta(k))\nmatrix p=1 k=2   (n_p(k) = Delta((k+1)p-1)+(2p+1)Delta(k))\nripple-of-pairs k=1   (Delta(3k+1)+2)\npairs k=1   (Delta(2k+3)-3)'
+want=$'four-delta k=2   (4Delta(k))\nmatrix p=1 k=2   (n_p(k) = Delta((k+1)p-1)+(2p+1)Delta(k))\nripple-of-pairs k=1   (Delta(3k+1)+2)\npairs k=1   (Delta(2k+3)-3)\nvacancy-segment p=3 k=2   (Delta(k+p)-p)'
 if [ "$out" = "$want" ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: classify 12: $out"; fi
 
 # GL1995 Fig.t22: d(22) = 0.179396908611866, 47 bonds, 2 rattlers.
