@@ -92,20 +92,26 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies) {
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
                                 " rows with a disk left on it");
   SegmentChoice best;
-  long double best_d = -1;
+  Packing best_packing;
+  RelaxReport best_relax;
   for (const auto& seg : straight_segments(rows, vacancies)) {
     Packing p = lattice_with_vacancies(rows, seg);
     interior_relax(p);
-    relax_packing(p);
+    RelaxReport lp = relax_packing(p);
     ++best.segments;
     // Distinct packings of one n differ by 1e-12 relative at least in the atlas; below 1e-14
     // two segments are the same packing (or the same d), and the first is kept.
-    if (p.d > best_d * (1 + 1e-14L)) {
-      best_d = p.d;
+    if (best.vacancies.empty() || p.d > best_packing.d * (1 + 1e-14L)) {
+      best_packing = std::move(p);
+      best_relax = std::move(lp);
       best.vacancies = seg;
     }
   }
-  best.pattern = relax_to_pattern(lattice_with_vacancies(rows, best.vacancies));
+  // The winner's bonds from its own relax: relax_to_pattern's steps, without relaxing it again.
+  BondIdentification id = identify_bonds(best_packing, best_relax.active);
+  best.pattern.packing = std::move(best_packing);
+  best.pattern.bonds = std::move(id.bonds);
+  best.pattern.rattlers = std::move(id.rattlers);
   return best;
 }
 
