@@ -18,12 +18,16 @@ Pattern build_vacancy_segment(const BuilderCall& c) {
 }
 
 // The Delta(2)-inflation of that packing: Delta(2 rows - 1) - (2 vacancies - 1) disks, side
-// L + rows - 1 (docs/findings.md §3), relaxed only to find its bonds.
+// L + rows - 1 (docs/findings.md §3), relaxed only to find its bonds. A long segment in a small
+// lattice (8 sites in Delta(10)) relaxes too far from its sites to round onto them; then the
+// unrelaxed lattice with the same segment is inflated instead (it rounds by construction), and
+// the relax after the inflation finds the slip.
 Pattern build_inflated_segment(const BuilderCall& c) {
-  const Pattern base = best_vacancy_segment(c.arg("rows"), c.arg("vacancies")).pattern;
-  const auto inflated = inflate_by_two(base.packing);
-  if (!inflated)
-    throw std::runtime_error("the base packing does not round onto its lattice: no inflation");
+  const long rows = c.arg("rows");
+  const SegmentChoice base = best_vacancy_segment(rows, c.arg("vacancies"));
+  auto inflated = inflate_by_two(base.pattern.packing);
+  if (!inflated) inflated = inflate_by_two(lattice_with_vacancies(rows, base.vacancies));
+  if (!inflated) throw std::logic_error("a lattice with vacancies does not inflate");
   return relax_to_pattern(*inflated);
 }
 

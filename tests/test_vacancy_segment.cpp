@@ -59,6 +59,13 @@ TEST(InflatedSegment, ReproducesDeltaTwoKPlusThreeMinusThree) {
       {"inflated-segment", 6, 2, "t117a", 0.0714316972661115803806982552683L, 315, 0});
 }
 
+TEST(InflatedSegment, InflatesALongSegmentThatRelaxesOffItsSites) {
+  // k = 2, p = 8: the 8-site segment in Delta(10) relaxes too far to round onto its sites, so
+  // the lattice with that segment is inflated instead. The result is t175a (rank 1 in
+  // data/atlas.csv, also the matrix k=4 p=3 member), with 2 rattlers.
+  expect_reproduces({"inflated-segment", 2, 8, "t175a", 0.0569014905693285424825904407726L, 479, 2});
+}
+
 TEST(VacancySegment, SegmentsAreCountedOncePerSymmetryOrbit) {
   // Delta(3): 9 segments of 2 sites, in two orbits (the 6 touching a corner site, the 3 in the
   // middle). Delta(4), 3 sites: the 3 sides and the 3 middle lines, two orbits.
