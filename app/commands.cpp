@@ -345,6 +345,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   jobs::ExploreSettings settings;
   settings.max_n = o.max_n;
   settings.search_steps = o.search_steps;
+  settings.discovered_max_n = o.discovered_max_n;
   settings.threads = o.threads;
   settings.seed = o.seed;
   settings.accuracy = o.accuracy;

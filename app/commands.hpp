@@ -100,6 +100,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o);
 struct ExploreOptions {
   long long max_n = 300;
   long long search_steps = 100;
+  long long discovered_max_n = 60;
   int threads = 2;
   std::uint64_t seed = 1;
   std::string out = "report";

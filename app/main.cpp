@@ -171,6 +171,9 @@ Action add_explore(CLI::App& cli, const GlobalOptions& g, ExploreOptions& o) {
       "compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)");
   c->add_option("--max-n", o.max_n, "class members up to this n (default 300)")
       ->check(CLI::Range(2LL, 100000LL));
+  c->add_option("--discovered-max-n", o.discovered_max_n,
+                "members of the discovered classes (vacancy segments) up to this n (default 60)")
+      ->check(CLI::Range(2LL, 100000LL));
   c->add_option("--search-steps", o.search_steps,
                 "basin-hopping steps per chain for each n <= 60 (default 100)")
       ->check(CLI::Range(1LL, 100000000LL));

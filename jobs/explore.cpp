@@ -61,6 +61,10 @@ struct Plan {
 Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
   Plan plan;
   plan.builds = pipeline::class_members_up_to(catalogue, s.max_n);
+  std::erase_if(plan.builds, [&](const BuildRequest& b) {
+    const auto& c = catalogue.find(b.class_id);
+    return c.claim_status == "discovered" && catalogue.n_of(c, b.k, b.p) > s.discovered_max_n;
+  });
   std::set<long long> search_n;
   for (long long n = 2; n <= std::min(s.billiards_max_n, s.max_n); ++n) search_n.insert(n);
   for (const auto& b : plan.builds) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,7 @@
 #include "analysis/bonds.hpp"
 #include "analysis/interior_relax.hpp"
 #include "analysis/relax.hpp"
+#include "core/neighbours.hpp"
 
 namespace tripack::patterns {
 
@@ -86,32 +89,83 @@ Pattern relax_to_pattern(const Packing& start) {
   return out;
 }
 
-SegmentChoice best_vacancy_segment(long rows, long vacancies) {
+namespace {
+
+// A copy of the lattice start shrunk towards the centroid by 2 * jitter spacings and each
+// coordinate moved by up to jitter / 2 spacings: strictly inside, and no two disks closer than
+// the lattice less 2 jitter. The draws are the generator's raw 53-bit words (the same on every
+// platform, unlike std::uniform_real_distribution).
+Packing jittered(const Packing& lattice, long rows, long double jitter, std::mt19937_64& rng) {
+  const long double spacing = 1.0L / static_cast<long double>(rows - 1);
+  const long double shrink = 1 - 2 * jitter * spacing;
+  const Vec2L centre{0.5L, kSqrt3 / 6};
+  auto uniform = [&] { return static_cast<long double>(rng() >> 11) * 0x1p-53L * 2 - 1; };
+  Packing p = lattice;
+  for (auto& q : p.points) {
+    const long double dx = uniform() * jitter * spacing / 2;
+    const long double dy = uniform() * jitter * spacing / 2;
+    q = Vec2L{centre.x + (q.x - centre.x) * shrink + dx, centre.y + (q.y - centre.y) * shrink + dy};
+  }
+  p.d = min_pair_distance(p.points, 2 * spacing);
+  return p;
+}
+
+// The atlas's order on packings of one n: d first (equal below 1e-15 relative), then more bonds.
+bool better_pattern(const Pattern& a, const Pattern& b) {
+  if (a.packing.d > b.packing.d * (1 + 1e-15L)) return true;
+  if (b.packing.d > a.packing.d * (1 + 1e-15L)) return false;
+  return a.bonds.size() > b.bonds.size();
+}
+
+}  // namespace
+
+SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search) {
   if (vacancies < 1 || vacancies >= rows)
     throw std::invalid_argument("a vacancy segment of " + std::to_string(vacancies) +
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
                                 " rows with a disk left on it");
-  SegmentChoice best;
-  Packing best_packing;
-  RelaxReport best_relax;
+  struct Relaxed {
+    std::vector<Site> segment;
+    Packing packing;
+    RelaxReport relax;
+  };
+  std::vector<Relaxed> relaxed;
   for (const auto& seg : straight_segments(rows, vacancies)) {
     Packing p = lattice_with_vacancies(rows, seg);
     interior_relax(p);
     RelaxReport lp = relax_packing(p);
-    ++best.segments;
-    // Distinct packings of one n differ by 1e-12 relative at least in the atlas; below 1e-14
-    // two segments are the same packing (or the same d), and the first is kept.
-    if (best.vacancies.empty() || p.d > best_packing.d * (1 + 1e-14L)) {
-      best_packing = std::move(p);
-      best_relax = std::move(lp);
-      best.vacancies = seg;
+    relaxed.push_back({seg, std::move(p), std::move(lp)});
+  }
+  SegmentChoice best;
+  best.segments = relaxed.size();
+  // The densest segments first (stable: ties keep straight_segments' order).
+  std::stable_sort(relaxed.begin(), relaxed.end(), [](const Relaxed& a, const Relaxed& b) {
+    return a.packing.d > b.packing.d * (1 + 1e-14L);
+  });
+  const std::size_t top = std::min(relaxed.size(), std::max<std::size_t>(1, search.top_segments));
+  for (std::size_t s = 0; s < top; ++s) {
+    Relaxed& r = relaxed[s];
+    // The exact lattice's own relax: its bonds without relaxing it again.
+    Pattern candidate;
+    BondIdentification id = identify_bonds(r.packing, r.relax.active);
+    candidate.packing = std::move(r.packing);
+    candidate.bonds = std::move(id.bonds);
+    candidate.rattlers = std::move(id.rattlers);
+    if (s == 0 || better_pattern(candidate, best.pattern)) {
+      best.pattern = std::move(candidate);
+      best.vacancies = r.segment;
+    }
+    const Packing lattice = lattice_with_vacancies(rows, r.segment);
+    for (int restart = 1; restart <= search.restarts; ++restart) {
+      std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
+      Pattern moved = relax_to_pattern(jittered(lattice, rows, search.jitter, rng));
+      ++best.restarts;
+      if (better_pattern(moved, best.pattern)) {
+        best.pattern = std::move(moved);
+        best.vacancies = r.segment;
+      }
     }
   }
-  // The winner's bonds from its own relax: relax_to_pattern's steps, without relaxing it again.
-  BondIdentification id = identify_bonds(best_packing, best_relax.active);
-  best.pattern.packing = std::move(best_packing);
-  best.pattern.bonds = std::move(id.bonds);
-  best.pattern.rattlers = std::move(id.rattlers);
   return best;
 }
 

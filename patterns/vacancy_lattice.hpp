@@ -40,12 +40,24 @@ std::vector<Site> canonical_vacancies(long rows, std::vector<Site> vacancies);
 Pattern relax_to_pattern(const Packing& start);
 
 // The densest of the relaxed lattices Delta(rows) minus one straight segment of `vacancies`
-// sites, over every segment up to symmetry (ties: the first in straight_segments' order).
+// sites, over every segment up to symmetry. The relax from the exact lattice can end at a
+// nearby lower maximum (t74a's segment: 8e-12 below it) or at the same d with a row hanging
+// loose in its cage, so that the surround test calls every disk a rattler (t73a's d from a
+// straight segment). So the `top_segments` densest segments are also relaxed from `restarts`
+// jittered copies of their lattice (seeds 1, 2, ...), and the densest result wins; equal d
+// (1e-15 relative) goes to more bonds, as the atlas ranks ties. A bounded enumeration:
+// segments + top_segments * restarts relaxes, deterministic.
+struct SegmentSearch {
+  std::size_t top_segments = 3;
+  int restarts = 8;
+  long double jitter = 1e-4L;  // in lattice spacings (see jittered() in the .cpp)
+};
 struct SegmentChoice {
   Pattern pattern;
   std::vector<Site> vacancies;  // the winning segment
-  std::size_t segments = 0;     // how many were relaxed
+  std::size_t segments = 0;     // how many were relaxed from the exact lattice
+  std::size_t restarts = 0;     // how many jittered restarts were relaxed
 };
-SegmentChoice best_vacancy_segment(long rows, long vacancies);
+SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search = {});
 
 }  // namespace tripack::patterns

@@ -341,12 +341,13 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
          "what finished (stages done: "
       << html_escape(fmt::format("{}", fmt::join(result.stages_done, ", "))) << ").</p>\n";
   h << fmt::format(
-      "<p>max n {}, search for n &le; {} and class members &le; {} ({} basin-hopping steps per "
-      "chain, one chain per thread; stress set: {} billiards runs), seed {}; {} packings, {} "
-      "comparisons; {:.1f} s.</p>\n",
-      result.settings.max_n, result.settings.billiards_max_n, result.settings.class_billiards_max_n,
-      result.settings.search_steps, result.settings.large_runs, result.settings.seed,
-      result.packings.size(), result.comparisons.size(), result.seconds);
+      "<p>max n {} (discovered classes: {}), search for n &le; {} and class members &le; {} ({} "
+      "basin-hopping steps per chain, one chain per thread; stress set: {} billiards runs), seed "
+      "{}; {} packings, {} comparisons; {:.1f} s.</p>\n",
+      result.settings.max_n, result.settings.discovered_max_n, result.settings.billiards_max_n,
+      result.settings.class_billiards_max_n, result.settings.search_steps,
+      result.settings.large_runs, result.settings.seed, result.packings.size(),
+      result.comparisons.size(), result.seconds);
   for (const auto& e : result.errors) h << "<p class=\"warn\">" << html_escape(e) << "</p>\n";
   h << "<h2>&delta;(n) = L(n) &minus; t(n)</h2>\n<p><img src=\"delta.svg\" alt=\"delta(n) plot\" "
        "width=\"900\"></p>\n<p>Data: <a href=\"delta.csv\">delta.csv</a>, script: <a "

@@ -45,13 +45,15 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
     const long long n = static_cast<long long>(built.packing.size());
     if (n < 2) continue;
     ASSERT_TRUE(best.count(n)) << "n = " << n << " is not in the atlas";
-    // A builder above the atlas must be one the atlas could not take: not certified (the
-    // vacancy-segment members at 169, 188 and 197 are 1e-11 to 4e-14 above it, uncertified:
-    // docs/findings.md §11).
-    // 188: vacancy-segment k=17 p=2 is 8.5e-12 above the atlas's 1/18 and certifies by the LPs
-    // with a smallest force of 9.6e-11: a new best not yet merged into data/atlas.csv
-    // (docs/findings.md §11), the one builder the atlas does not hold yet.
-    if (n == 188 && member.class_id == "vacancy-segment") continue;
+    // A builder above the atlas must be one the atlas could not take: not certified (169 and
+    // 197 are 1e-11 and 4e-14 above it, uncertified: docs/findings.md §11). Three vacancy-segment
+    // members are certified packings denser than the atlas's (docs/findings.md §11), found by
+    // the builder and not yet merged into data/atlas.csv (its exact d(n) rows would change):
+    // 48 (k=3 p=7, 3.3e-5 above), 102 (k=11 p=3, 6.7e-10) and 188 (k=17 p=2, 8.5e-12).
+    if (member.class_id == "vacancy-segment" && (n == 48 || n == 102 || n == 188)) {
+      EXPECT_GT(built.packing.d, best[n]) << n;
+      continue;
+    }
     if (built.packing.d * (1 - 1e-14L) > best[n]) {
       EXPECT_FALSE(pipeline::analyze_packing(built.packing, {}).certified())
           << member.class_id << " k=" << member.k << " p=" << member.p << " (n = " << n

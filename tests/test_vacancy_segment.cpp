@@ -52,6 +52,33 @@ TEST(VacancySegment, ReproducesBestsInNoClassOfThePaper) {
   expect_reproduces({"vacancy-segment", 2, 6, "t30a", 0.150761500215427519456797490307L, 73, 1});
 }
 
+TEST(VacancySegment, RestartsReachTheAtlasWhereTheLatticeRelaxStopsShort) {
+  // From the exact lattice, t75a's segment relaxes to a nearby maximum 2.3e-11 below it, and the
+  // straight segment at 73 reaches t73a196's d with a row loose in its cage (every disk a
+  // rattler by the surround test); the jittered restarts of the densest segments reach both.
+  expect_reproduces(
+      {"vacancy-segment", 7, 5, "t73a196", 0.0916182644545774626730577091887L, 196, 0});
+  expect_reproduces({"vacancy-segment", 9, 3, "t75a", 0.0909304287055998501593599775230L, 188, 1});
+}
+
+TEST(VacancySegment, BuildsA48DenserThanTheAtlas) {
+  // t48a (data/atlas.csv, reached by 105 billiards runs) has d = 0.114820002270213543567; the
+  // 7-site segment of Delta(10) gives a certified packing 3.3e-5 denser (docs/findings.md §11).
+  const auto b = pipeline::build_and_certify(catalogue(), {"vacancy-segment", 3, 7, ""}, {});
+  ASSERT_TRUE(b.analysis);
+  EXPECT_TRUE(b.verified()) << b.analysis->status();
+  const Packing& p = b.analysis->pattern.packing;
+  ASSERT_EQ(p.size(), 48u);
+  EXPECT_GT(p.d, 0.114820002270213543567L * (1 + 3e-5L));
+  // The packing itself, not its reported d: every pair at least d apart and every centre in the
+  // unit triangle, to the long double polish's 1e-18.
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GE(norm(p.points[i] - p.points[j]), p.d * (1 - 1e-17L)) << i << " " << j;
+    for (Side s : kSides) EXPECT_GE(wall_distance(p.points[i], s, 1.0L), -1e-17L) << i;
+  }
+}
+
 TEST(InflatedSegment, ReproducesDeltaTwoKPlusThreeMinusThree) {
   // docs/findings.md §3: the best of Delta(2k+3)-3 is the inflation of the best Delta(k+2)-2.
   expect_reproduces({"inflated-segment", 5, 2, "t88a", 0.0833512626571264412680038067303L, 234, 0});
@@ -63,7 +90,8 @@ TEST(InflatedSegment, InflatesALongSegmentThatRelaxesOffItsSites) {
   // k = 2, p = 8: the 8-site segment in Delta(10) relaxes too far to round onto its sites, so
   // the lattice with that segment is inflated instead. The result is t175a (rank 1 in
   // data/atlas.csv, also the matrix k=4 p=3 member), with 2 rattlers.
-  expect_reproduces({"inflated-segment", 2, 8, "t175a", 0.0569014905693285424825904407726L, 479, 2});
+  expect_reproduces(
+      {"inflated-segment", 2, 8, "t175a", 0.0569014905693285424825904407726L, 479, 2});
 }
 
 TEST(VacancySegment, SegmentsAreCountedOncePerSymmetryOrbit) {
