@@ -355,7 +355,7 @@ int cmd_explore(const GlobalOptions& g, const ExploreOptions& o) {
   if (estimate > 300)
     std::cerr << fmt::format(
         "tripack: warning: this exploration is estimated at ~{:.0f} minutes on 2 cores (the "
-        "defaults take about 5); Ctrl-C stops it with a consistent report of what finished\n",
+        "defaults take about 6); Ctrl-C stops it with a consistent report of what finished\n",
         estimate / 60);
   // The atlas is read (every file analysed) before the exploration: a bad one costs nothing.
   std::optional<report::ExploreAtlas> atlas;
