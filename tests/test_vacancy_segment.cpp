@@ -79,6 +79,18 @@ TEST(VacancySegment, BuildsA48DenserThanTheAtlas) {
   }
 }
 
+TEST(VacancySegment, CertifiesAMemberAboveTheLpRelaxLimit) {
+  // From 1000 disks the relax is the interior-point method alone (no LP relax: CLP took over 10
+  // minutes on one segment of n = 2450). k = 2, p = 44: Delta(46) - 44 = 1037 disks, 3 segments
+  // up to symmetry; certified, and denser than the lattice it started from (d = 1/45, the
+  // spacing of Delta(46)).
+  const auto b = pipeline::build_and_certify(catalogue(), {"vacancy-segment", 2, 44, ""}, {});
+  ASSERT_TRUE(b.analysis);
+  EXPECT_EQ(b.analysis->pattern.packing.size(), 1037u);
+  EXPECT_TRUE(b.analysis->certified()) << b.analysis->status();
+  EXPECT_GT(b.record.d.value(), 1.0L / 45 * (1 + 1e-6L));
+}
+
 TEST(InflatedSegment, ReproducesDeltaTwoKPlusThreeMinusThree) {
   // docs/findings.md §3: the best of Delta(2k+3)-3 is the inflation of the best Delta(k+2)-2.
   expect_reproduces({"inflated-segment", 5, 2, "t88a", 0.0833512626571264412680038067303L, 234, 0});
