@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "constructors/catalogue.hpp"
@@ -104,6 +105,18 @@ TEST(InflatedSegment, InflatesALongSegmentThatRelaxesOffItsSites) {
   // data/atlas.csv, also the matrix k=4 p=3 member), with 2 rattlers.
   expect_reproduces(
       {"inflated-segment", 2, 8, "t175a", 0.0569014905693285424825904407726L, 479, 2});
+}
+
+TEST(InflatedSegment, HasItsClassesNumberOfDisksWhereTheSlipRoundsOntoOtherSites) {
+  // k = 2, p = 7: the relaxed base's slip rounds one disk onto a neighbouring site, and its
+  // inflation had 141 disks; the class's n is Delta(17) - 13 = 140 (also k = 3, p = 7: 177).
+  for (const auto& [k, p, n] : {std::tuple{2L, 7L, 140u}, std::tuple{3L, 7L, 177u}}) {
+    const auto b = pipeline::build_and_certify(catalogue(), {"inflated-segment", k, p, ""}, {});
+    ASSERT_TRUE(b.analysis);
+    EXPECT_EQ(b.analysis->pattern.packing.size(), n) << "k=" << k << " p=" << p;
+    EXPECT_EQ(static_cast<long long>(n),
+              catalogue().n_of(catalogue().find("inflated-segment"), k, p));
+  }
 }
 
 TEST(VacancySegment, SegmentsAreCountedOncePerSymmetryOrbit) {
