@@ -24,10 +24,10 @@ Pattern build_vacancy_segment(const BuilderCall& c) {
 // the relax after the inflation finds the slip.
 Pattern build_inflated_segment(const BuilderCall& c) {
   const long rows = c.arg("rows");
-  const SegmentChoice base = best_vacancy_segment(rows, c.arg("vacancies"));
+  const long vacancies = c.arg("vacancies");
+  const SegmentChoice base = best_vacancy_segment(rows, vacancies);
   // A long slip can also round some disks onto the neighbouring site, which changes the vacancy
   // set and the inflated n (k = 2, p = 20: 913 disks instead of 907); the lattice then too.
-  const long vacancies = c.arg("vacancies");
   const std::size_t expected =
       static_cast<std::size_t>(triangular(2 * rows - 1) - (2 * vacancies - 1));
   auto inflated = inflate_by_two(base.pattern.packing);
