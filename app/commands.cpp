@@ -429,6 +429,7 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
       o.certificates.empty() ? std::filesystem::path() : writable_directory(o.certificates);
   pipeline::ExactSettings settings;
   settings.digits = o.digits;
+  settings.first_digits = o.first_digits;
   settings.max_degree = o.max_degree;
   settings.existence = o.existence;
   // Class members as built (polished, not certified: exact_of_packing analyses them itself).
@@ -454,9 +455,21 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
     const auto& r = run.packings.back();
     // Certificates first: what was proven is kept even if printing fails.
     if (!dir.empty() && r.configuration && r.configuration->proven) {
+      // The certificate names the coordinates its given points come from: the packing file, or
+      // for a class member LABEL.txt written beside it (the given points, 30 decimals).
+      std::string coordinates;
+      if (o.files.empty()) {
+        coordinates = r.label + ".txt";
+        report::write_file(dir / coordinates, pipeline::coordinates_text(r));
+      } else {
+        coordinates = std::filesystem::relative(std::filesystem::weakly_canonical(o.files[i]),
+                                                std::filesystem::weakly_canonical(dir))
+                          .generic_string();
+      }
       std::ostringstream text;
       exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration,
-                                      r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
+                                      r.optimality ? &*r.optimality : nullptr, r.given_tolerance,
+                                      coordinates});
       report::write_file(dir / (r.label + ".gp"), text.str());
     }
   }
@@ -470,6 +483,7 @@ int cmd_exact_atlas(const GlobalOptions& g, const ExactAtlasOptions& o) {
   settings.out = o.out.empty() ? settings.atlas.parent_path() : std::filesystem::path(o.out);
   writable_directory(settings.out.string());
   settings.exact.digits = o.digits;
+  settings.exact.first_digits = o.first_digits;
   settings.exact.max_degree = o.max_degree;
   settings.threads = o.threads;
   settings.retry_none = o.retry_none;

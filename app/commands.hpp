@@ -117,6 +117,7 @@ struct ExactOptions {
   std::string k_range;  // "A..B" or "K"
   long p = 0;
   int digits = 300;  // D: found from D digits, confirmed from 2D
+  int first_digits = 0;  // 0: digits only; else first_digits, twice that, ... up to digits
   int max_degree = 48;
   std::string certificates;  // a directory: LABEL.gp for every proven packing
   bool existence = true;     // --no-existence: the polynomial only
@@ -130,6 +131,7 @@ struct ExactAtlasOptions {
   std::string out;      // empty: the atlas's directory
   std::string n_range;  // "A..B", "N" or a list; empty: every row
   int digits = 300;
+  int first_digits = 0;  // as ExactOptions
   int max_degree = 48;
   int threads = 2;
   bool retry_none = false;

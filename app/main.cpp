@@ -322,6 +322,9 @@ Action add_exact(CLI::App& cli, const GlobalOptions& g, ExactOptions& o) {
   c->add_option("--p", o.p, "with --class: matrix row p")->check(CLI::Range(0L, 1000000000L));
   c->add_option("--digits", o.digits, "D: digits the relation is found from (default 300)")
       ->check(CLI::Range(40, 20000));
+  c->add_option("--first-digits", o.first_digits,
+                "try D = this, twice this, ... up to --digits until the row is proven (default: --digits only)")
+      ->check(CLI::Range(40, 20000));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));
   c->add_option("--certificates", o.certificates,
@@ -341,6 +344,9 @@ Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions&
                 "where atlas-exact.csv and exact/ go (default: the atlas's directory)");
   c->add_option("--n", o.n_range, "only these n: A..B, N or a comma-separated list of them");
   c->add_option("--digits", o.digits, "D (default 300)")->check(CLI::Range(40, 20000));
+  c->add_option("--first-digits", o.first_digits,
+                "try D = this, twice this, ... up to --digits until the row is proven (default: --digits only)")
+      ->check(CLI::Range(40, 20000));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));
   c->add_option("--threads", o.threads, "rows at once (default 2)")->check(CLI::Range(1, 256));

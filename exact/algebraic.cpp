@@ -134,23 +134,19 @@ MinimalPolynomial flint::minimal_polynomial_of_ball(const arb_t x2, int digits, 
   // The first D digits: the value rounded there (the ball's radius covers it).
   Arb x;
   round_ball(x.value, x2, digits);
-  const int scale = digits - 10, scale2 = doubled - 10;
-  FmpzPoly factor, again;
+  const int scale = digits - 10;
+  FmpzPoly factor;
   for (int m : lattice_degrees(max_degree)) {
     const Powers powers(x.value, m, prec);
     double used = 0;
     const auto relation = flint::integer_relation(powers.pointers(), scale, prec, used);
-    if (!relation || used > 0.5 * scale) continue;  // nothing, or as many digits as it had
+    // A relation that uses (nearly) all the digits is what LLL returns when there is none.
+    if (!relation || used > 0.9 * scale) continue;
+    // Doubled precision: the factor vanishes at the value to 2D digits (its ball contains 0, the
+    // other factors' balls exclude it). A relation fitted to D digits that is not a true one
+    // misses by about 10^-D there.
     if (!vanishing_factor(factor.value, *relation, x2, prec2)) continue;
-    // Found again from 2D digits at the factor's own degree, and vanishing there.
     const int degree = static_cast<int>(fmpz_poly_degree(factor.value));
-    const Powers powers2(x2, degree, prec2);
-    double used2 = 0;
-    const auto relation2 = flint::integer_relation(powers2.pointers(), scale2, prec2, used2);
-    if (!relation2) continue;
-    flint::poly_from_strings(again.value, *relation2);
-    normalise(again.value);
-    if (!fmpz_poly_equal(again.value, factor.value)) continue;
     // Irreducible over Q: the factorisation of the factor has one factor of multiplicity 1.
     fmpz_poly_factor_t check;
     fmpz_poly_factor_init(check);

@@ -31,9 +31,14 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
     throw std::invalid_argument("write_certificate: a proven configuration is needed");
   const ConfigurationInput& in = *data.input;
   const ExactConfiguration& c = *data.configuration;
-  out << "\\\\ tripack exact certificate (format 1): read by checker/check_exact.gp\n";
-  out << "cert_format = 1;\n";
+  const int format = data.coordinates_file.empty() ? 1 : 2;
+  out << fmt::format("\\\\ tripack exact certificate (format {}): read by checker/check_exact.gp\n", format);
+  out << fmt::format("cert_format = {};\n", format);
   out << fmt::format("label = \"{}\"; n = {};\n", data.label, in.n);
+  if (format == 2) {
+    out << "\\\\ the packing's coordinate file (relative to this file): n, label and given come from it\n";
+    out << fmt::format("coordinates_file = \"{}\";\n", data.coordinates_file);
+  }
   out << "\\\\ the minimal polynomial of d over Q; d is its only root in [d_low, d_high]\n";
   out << fmt::format("P = {};\n", data.polynomial->polynomial.pari("x"));
   out << fmt::format("d_low = {}; d_high = {};\n", data.polynomial->root.low, data.polynomial->root.high);

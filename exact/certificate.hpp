@@ -19,9 +19,14 @@ struct CertificateData {
   const ExactConfiguration* configuration = nullptr;  // proven
   const StrictOptimality* optimality = nullptr;        // when proven: claimed too
   std::string given_tolerance = "1e-25";
+  // The coordinate file `given` was read from (the atlas's, with the label and n in its header),
+  // relative to the certificate's directory: format 2 names it, and the checker compares n, the
+  // label and every given point with it. Empty: format 1 (the checker looks for ../atlas/LABEL.txt).
+  std::string coordinates_file;
 };
 
-// Format 1; claims "existence", and "strict-local-optimum" with the stress when proven.
+// Format 2 (format 1 without a coordinate file); claims "existence", and
+// "strict-local-optimum" with the stress when proven.
 void write_certificate(std::ostream& out, const CertificateData& data);
 
 }  // namespace tripack::exact

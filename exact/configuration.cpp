@@ -35,34 +35,51 @@ Balls powers_of(const arb_t x, int count, slong prec) {
 }
 
 // The value as a rational combination of a basis: value = -(c_1 b_1 + c_2 b_2 + ...) / c_0 from
-// the integer relation among [value, b_1, b_2, ...], found at D digits and found again (the same,
-// up to sign) at 2D; basis(pass, prec) gives the basis balls of D digits (pass 0) or 2D (pass 1).
-// No "few digits" rule here (unlike P's search): every element found is verified exactly
-// afterwards (the identities in K), so a spurious relation can only fail, never prove.
+// the integer relation among [value, b_1, b_2, ...]. basis(pass, prec) gives the basis balls of D
+// digits (pass 0) or 2D (pass 1). The relation is looked for from 100, 200, 400, ... digits up to
+// min(D, largest) (most coordinates need far fewer than D, and LLL's cost grows with the digits), and taken
+// when it vanishes at the 2D-digit values (doubled precision: a relation fitted to fewer digits
+// that is not a true one misses by about 10^-(its digits) there). No "few digits" rule beyond
+// that: every element found is verified exactly afterwards (the identities in K), so a spurious
+// relation can only fail, never prove.
 std::optional<std::vector<std::string>> combination_of(
-    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis, int digits) {
+    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis, int digits,
+    int largest) {
   const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
-  std::vector<std::vector<std::string>> relations;
-  for (int pass = 0; pass < 2; ++pass) {
-    const Balls balls = basis(pass, pass ? prec2 : prec);
-    std::vector<const arb_struct*> values{pass ? value2 : value};
-    for (const auto& b : balls) values.push_back(b->value);
-    const int scale = (pass ? 2 * digits : digits) - 10;
+  const Balls balls = basis(0, prec), balls2 = basis(1, prec2);
+  std::vector<const arb_struct*> values{value};
+  for (const auto& b : balls) values.push_back(b->value);
+  std::vector<int> ladder;
+  for (int use = 100; use < std::min(digits, largest); use *= 2) ladder.push_back(use);
+  if (largest >= digits) ladder.push_back(digits);
+  std::optional<std::vector<std::string>> found;
+  Arb sum, term;
+  flint::Fmpz c;
+  for (int use : ladder) {
+    const int scale = use - 10;
     double used = 0;
-    auto relation = flint::integer_relation(values, scale, pass ? prec2 : prec, used);
-    if (!relation || relation->front() == "0" || used > 0.9 * scale) return std::nullopt;
+    auto relation = flint::integer_relation(values, scale, flint::bits_for(use), used);
+    if (!relation || relation->front() == "0" || used > 0.9 * scale) continue;
+    arb_zero(sum.value);
+    for (std::size_t i = 0; i < relation->size(); ++i) {
+      fmpz_set_str(c.value, (*relation)[i].c_str(), 10);
+      arb_mul_fmpz(term.value, i == 0 ? value2 : balls2[i - 1]->value, c.value, prec2);
+      arb_add(sum.value, sum.value, term.value, prec2);
+    }
+    if (!arb_contains_zero(sum.value)) continue;
     if (relation->front()[0] == '-')  // sign: c_0 > 0
-      for (auto& c : *relation) c = c[0] == '-' ? c.substr(1) : (c == "0" ? c : "-" + c);
-    relations.push_back(*relation);
+      for (auto& e : *relation) e = e[0] == '-' ? e.substr(1) : (e == "0" ? e : "-" + e);
+    found = relation;
+    break;
   }
-  if (relations[0] != relations[1]) return std::nullopt;
-  const auto& c = relations[0];
+  if (!found) return std::nullopt;
+  const auto& coefficients = *found;
   std::vector<std::string> combination;
   Fmpq q;
   flint::Fmpz numerator, denominator;
-  fmpz_set_str(denominator.value, c[0].c_str(), 10);
-  for (std::size_t i = 1; i < c.size(); ++i) {
-    fmpz_set_str(numerator.value, c[i].c_str(), 10);
+  fmpz_set_str(denominator.value, coefficients[0].c_str(), 10);
+  for (std::size_t i = 1; i < coefficients.size(); ++i) {
+    fmpz_set_str(numerator.value, coefficients[i].c_str(), 10);
     fmpz_neg(numerator.value, numerator.value);
     fmpq_set_fmpz_frac(q.value, numerator.value, denominator.value);
     char* text = fmpq_get_str(nullptr, 10, q.value);
@@ -75,10 +92,10 @@ std::optional<std::vector<std::string>> combination_of(
 // The value as an element of Q(t): a combination of 1, t, ..., t^(k-1).
 std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_t value2,
                                                    const arb_t t, const arb_t t2, int k,
-                                                   int digits) {
+                                                   int digits, int largest) {
   const auto combination = combination_of(
       value, value2, [&](int pass, slong prec) { return powers_of(pass ? t2 : t, k, prec); },
-      digits);
+      digits, largest);
   if (!combination) return std::nullopt;
   return RationalPolynomial{*combination};
 }
@@ -249,7 +266,7 @@ class BasisChange {
 std::optional<std::vector<std::string>> tower_coordinates(const arb_t value, const arb_t value2,
                                                           const arb_t d, const arb_t d2,
                                                           const arb_t s, const arb_t s2, int m,
-                                                          int digits) {
+                                                          int digits, int largest) {
   return combination_of(
       value, value2,
       [&](int pass, slong prec) {
@@ -260,7 +277,7 @@ std::optional<std::vector<std::string>> tower_coordinates(const arb_t value, con
         }
         return basis;
       },
-      digits);
+      digits, largest);
 }
 
 }  // namespace
@@ -291,7 +308,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   std::optional<RationalPolynomial> sqrt3;
   std::unique_ptr<Tower> tower;
   std::unique_ptr<BasisChange> to_t;
-  if (m > 1) sqrt3 = express_in_field(s.value, s2.value, d.value, d2.value, m, digits);
+  if (m > 1) sqrt3 = express_in_field(s.value, s2.value, d.value, d2.value, m, digits, digits);
   if (sqrt3) {
     out.field = d_poly.polynomial;
     out.embedding = d_poly.root;
@@ -375,37 +392,83 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     }
   }
 
-  // Every non-rattler coordinate in K; rattlers at their given centred place (40 digits).
+  // Every non-rattler coordinate in K; rattlers at their given centred place (40 digits). The
+  // disks are taken in breadth-first order along the bonds, and a coordinate is first looked for
+  // as a bonded neighbour's plus a difference found from at most 200 digits: in lattice-like
+  // packings most differences are d/2, sqrt(3) d/2 and the like, of small height, while the
+  // coordinates themselves may need 1,000s of digits (FLINT's LLL time grows with them).
   const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
   out.points.resize(static_cast<std::size_t>(in.n));
-  for (int i = 0; i < in.n; ++i)
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(in.n));
+  for (const Bond& b : in.bonds)
+    if (!b.is_wall()) {
+      neighbours[static_cast<std::size_t>(b.a)].push_back(b.b);
+      neighbours[static_cast<std::size_t>(b.b)].push_back(b.a);
+    }
+  std::vector<int> order;
+  {
+    std::vector<char> seen(static_cast<std::size_t>(in.n), 0);
+    for (int root = 0; root < in.n; ++root) {
+      if (seen[static_cast<std::size_t>(root)]) continue;
+      seen[static_cast<std::size_t>(root)] = 1;
+      for (std::size_t head = order.size(), tail = (order.push_back(root), head); tail < order.size(); ++tail)
+        for (int j : neighbours[static_cast<std::size_t>(order[tail])])
+          if (!seen[static_cast<std::size_t>(j)]) {
+            seen[static_cast<std::size_t>(j)] = 1;
+            order.push_back(j);
+          }
+    }
+  }
+  auto find_element = [&](const arb_t v, const arb_t v2, int largest) -> std::optional<RationalPolynomial> {
+    if (tower) {
+      const auto coordinates = tower_coordinates(v, v2, d.value, d2.value, s.value, s2.value, m, digits, largest);
+      if (coordinates) return to_t->in_t(*coordinates);
+      return std::nullopt;
+    }
+    return express_in_field(v, v2, t.value, t2.value, k, digits, largest);
+  };
+  // The balls (D and 2D digits) of the coordinates found so far.
+  std::vector<std::array<std::unique_ptr<Arb>, 4>> balls(static_cast<std::size_t>(in.n));
+  for (int i : order)
     for (int c = 0; c < 2; ++c) {
-      const std::string& text = in.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
+      const auto iu = static_cast<std::size_t>(i), cu = static_cast<std::size_t>(c);
+      const std::string& text = in.points[iu][cu];
       if (rattlers.count(i)) {
         Fmpq q;
         decimal_to_fmpq(q.value, text, 40);
         char* qt = fmpq_get_str(nullptr, 10, q.value);
-        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = RationalPolynomial{{qt}};
+        out.points[iu][cu] = RationalPolynomial{{qt}};
         flint_free(qt);
         continue;
       }
-      Arb v2, v;
-      flint::set_decimal(v2.value, text, 2 * digits, prec2);
-      flint::round_ball(v.value, v2.value, digits);
+      auto v = std::make_unique<Arb>(), v2 = std::make_unique<Arb>();
+      flint::set_decimal(v2->value, text, 2 * digits, prec2);
+      flint::round_ball(v->value, v2->value, digits);
       std::optional<RationalPolynomial> element;
-      if (tower) {
-        const auto coordinates =
-            tower_coordinates(v.value, v2.value, d.value, d2.value, s.value, s2.value, m, digits);
-        if (coordinates) element = to_t->in_t(*coordinates);
-      } else {
-        element = express_in_field(v.value, v2.value, t.value, t2.value, k, digits);
+      Arb diff, diff2;
+      for (int j : neighbours[iu]) {
+        const auto& known = balls[static_cast<std::size_t>(j)];
+        if (!known[2 * cu]) continue;
+        arb_sub(diff.value, v->value, known[2 * cu]->value, prec);
+        arb_sub(diff2.value, v2->value, known[2 * cu + 1]->value, prec2);
+        const auto difference = find_element(diff.value, diff2.value, 200);
+        if (!difference) continue;
+        FmpqPoly a, b;
+        flint::fmpq_poly_from_strings(a.value, out.points[static_cast<std::size_t>(j)][cu].coefficients);
+        flint::fmpq_poly_from_strings(b.value, difference->coefficients);
+        fmpq_poly_add(a.value, a.value, b.value);
+        element = flint::strings_from_fmpq_poly(a.value);
+        break;
       }
+      if (!element) element = find_element(v->value, v2->value, digits);
       if (!element) {
         out.reason = fmt::format("coordinate {} of point {} is not in the field of degree {} at {} digits",
                                  c == 0 ? "x" : "y", i + 1, k, digits);
         return out;
       }
-      out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = *element;
+      out.points[iu][cu] = *element;
+      balls[iu][2 * cu] = std::move(v);
+      balls[iu][2 * cu + 1] = std::move(v2);
     }
 
   // Every bond as an identity in K.

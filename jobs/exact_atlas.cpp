@@ -162,7 +162,11 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     const pipeline::ExactResult& r = found[i];
     if (r.configuration && r.configuration->proven) {
       std::ofstream cert(settings.out / "exact" / (r.label + ".gp"));
-      exact::write_certificate(cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr, r.given_tolerance});
+      const fs::path coordinates = settings.atlas.parent_path() / rows[i].file;
+      exact::write_certificate(
+          cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr,
+                 r.given_tolerance,
+                 fs::relative(fs::weakly_canonical(coordinates), fs::weakly_canonical(settings.out / "exact")).generic_string()});
       if (!cert) throw std::runtime_error("cannot write the certificate of " + r.label);
     }
     table << exact_csv_row(r) << "\n" << std::flush;

@@ -48,7 +48,24 @@ int decimals_of(const std::vector<std::array<std::string, 2>>& points) {
   return fewest;
 }
 
+// A fixed-notation decimal cut (not rounded) to 30 decimals: within 1e-30 of it.
+std::string thirty_decimals(const std::string& text) {
+  const auto dot = text.find('.');
+  if (dot == std::string::npos) return text + "." + std::string(30, '0');
+  std::string out = text.substr(0, dot + 31);
+  out.append(dot + 31 - out.size(), '0');
+  return out;
+}
+
 }  // namespace
+
+std::string coordinates_text(const ExactResult& result) {
+  std::string out = "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
+  out += fmt::format("# n: {}\n# label: {}\n# d: {}\n", result.n, result.label,
+                     result.d.empty() ? std::string("") : thirty_decimals(result.d));
+  for (const auto& p : result.input.given) out += p[0] + " " + p[1] + "\n";
+  return out;
+}
 
 ExactResult exact_of_file(const std::string& file, const ExactSettings& settings) {
   AnalyzeRequest request;
@@ -83,7 +100,11 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
   const auto start = Clock::now();
   MultiprecisionPolish polish = polish_multiprecision(analysis.pattern.packing, analysis.pattern.bonds,
                                                       analysis.pattern.rattlers, 2 * settings.digits);
-  if (polish.converged && !analysis.pattern.rattlers.empty())
+  // Rattlers given to 27+ decimals stay where the file has them (below); others are centred in
+  // their cages, a compass search whose cost grows with the digits (minutes at 2,000).
+  const bool given_places = static_cast<int>(given.size()) == static_cast<int>(packing.size()) &&
+                            decimals_of(given) >= 27;
+  if (polish.converged && !analysis.pattern.rattlers.empty() && !given_places)
     centre_rattlers_multiprecision(polish, analysis.pattern.rattlers);
   result.seconds_polish = seconds_since(start);
   if (!polish.converged) {
@@ -91,17 +112,6 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     return result;
   }
   result.d = polish.d;
-  const auto t1 = Clock::now();
-  result.polynomial = exact::minimal_polynomial(polish.d, settings.digits, settings.max_degree);
-  result.seconds_polynomial = seconds_since(t1);
-  if (!result.polynomial.found) {
-    result.reason = result.polynomial.reason;
-    return result;
-  }
-  if (!settings.existence) {
-    result.reason = "statement (I) not attempted";
-    return result;
-  }
   // The given points: the file's own text when it is "x y" lines with enough digits for the
   // 10^-25 claim, else the polished points at 40 digits (the claim is then about those).
   std::string given_note;
@@ -111,34 +121,57 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
   input.rattlers = analysis.pattern.rattlers;
   input.d = polish.d;
   input.points = polish.points;
-  input.digits = settings.digits;
-  if (static_cast<int>(text.points.size()) == result.n && decimals_of(text.points) >= 27) {
+  if (given_places) {
     input.given = text.points;
     result.given_tolerance = "1e-25";
     // A rattler is free in its cage: it stays where the file has it (checked strictly apart).
     for (int r : analysis.pattern.rattlers) input.points[static_cast<std::size_t>(r)] = text.points[static_cast<std::size_t>(r)];
   } else {
-    for (const auto& p : polish.points) input.given.push_back({p[0].substr(0, 42), p[1].substr(0, 42)});
+    for (const auto& p : polish.points) input.given.push_back({thirty_decimals(p[0]), thirty_decimals(p[1])});
     result.given_tolerance = "1e-25";
-    given_note = "; the given points are the polish's (no coordinates with 27+ decimals given)";
+    given_note = "; the given points are the polish's, to 30 decimals (no coordinates with 27+ decimals given)";
   }
-  const auto t2 = Clock::now();
-  result.configuration = exact::prove_existence(input, result.polynomial);
-  result.seconds_existence = seconds_since(t2);
-  if (!result.configuration->proven) {
-    result.reason = result.configuration->reason;
+  // D, 2D, 4D, ... up to settings.digits; polish.d has 2 * settings.digits digits, and each
+  // stage reads its first 2D of them.
+  std::vector<int> ladder;
+  const int first = settings.first_digits > 0 ? std::min(settings.first_digits, settings.digits) : settings.digits;
+  for (int D = first; D < settings.digits; D *= 2) ladder.push_back(D);
+  ladder.push_back(settings.digits);
+  for (int D : ladder) {
+    input.digits = D;
+    if (!result.polynomial.found) {
+      const auto t1 = Clock::now();
+      result.polynomial = exact::minimal_polynomial(polish.d, D, settings.max_degree);
+      result.seconds_polynomial += seconds_since(t1);
+      if (!result.polynomial.found) {
+        result.reason = result.polynomial.reason;
+        continue;
+      }
+    }
+    if (!settings.existence) {
+      result.reason = "statement (I) not attempted";
+      return result;
+    }
+    const auto t2 = Clock::now();
+    result.configuration = exact::prove_existence(input, result.polynomial);
+    result.seconds_existence += seconds_since(t2);
+    if (!result.configuration->proven) {
+      result.reason = result.configuration->reason;
+      continue;
+    }
+    result.proof = "existence";
+    const auto t3 = Clock::now();
+    result.optimality = exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
+    result.seconds_existence += seconds_since(t3);
+    if (result.optimality->proven) {
+      result.proof = "exact";
+      result.reason = given_note.empty() ? "" : given_note.substr(2);
+    } else {
+      result.reason = "statement (II): " + result.optimality->reason + given_note;
+    }
     return result;
   }
-  result.proof = "existence";
-  const auto t3 = Clock::now();
-  result.optimality = exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
-  result.seconds_existence += seconds_since(t3);
-  if (result.optimality->proven) {
-    result.proof = "exact";
-    result.reason = given_note.empty() ? "" : given_note.substr(2);
-  } else {
-    result.reason = "statement (II): " + result.optimality->reason + given_note;
-  }
+  if (result.configuration && !result.configuration->proven) result.configuration.reset();
   return result;
 }
 

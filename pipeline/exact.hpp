@@ -18,6 +18,9 @@ namespace tripack::pipeline {
 
 struct ExactSettings {
   int digits = 300;       // D: the relation is found from D digits, confirmed from 2D
+  // A row that fails at first_digits (0: digits) is tried again at twice as many, up to digits:
+  // the polish is done once, to 2 * digits; P found at fewer digits is kept.
+  int first_digits = 0;
   int max_degree = 48;    // of P
   bool existence = true;  // also prove statements (I) and (II)
 };
@@ -51,5 +54,9 @@ ExactResult exact_of_file(const std::string& file, const ExactSettings& settings
 ExactResult exact_of_packing(const Packing& packing, const std::string& label,
                              const std::vector<std::array<std::string, 2>>& given,
                              const ExactSettings& settings);
+
+// The given points as a coordinate file in the atlas's layout ("# n:", "# label:", "# d:" and
+// "x y" lines with 30 decimals), for a certificate to name when no packing file was read.
+std::string coordinates_text(const ExactResult& result);
 
 }  // namespace tripack::pipeline
