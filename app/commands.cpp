@@ -457,20 +457,24 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
     if (!dir.empty() && r.configuration && r.configuration->proven) {
       // The certificate names the coordinates its given points come from: the packing file, or
       // for a class member LABEL.txt written beside it (the given points, 30 decimals).
+      // A class member's name ("four-delta k=3") as a label the checker accepts: "four-delta_k3".
+      std::string label;
+      for (char ch : r.label)
+        if (ch != '=') label += ch == ' ' ? '_' : ch;
       std::string coordinates;
       if (o.files.empty()) {
-        coordinates = r.label + ".txt";
-        report::write_file(dir / coordinates, pipeline::coordinates_text(r));
+        coordinates = label + ".txt";
+        report::write_file(dir / coordinates, pipeline::coordinates_text(r, label));
       } else {
         coordinates = std::filesystem::relative(std::filesystem::weakly_canonical(o.files[i]),
                                                 std::filesystem::weakly_canonical(dir))
                           .generic_string();
       }
       std::ostringstream text;
-      exact::write_certificate(text, {r.label, &r.input, &r.polynomial, &*r.configuration,
+      exact::write_certificate(text, {label, &r.input, &r.polynomial, &*r.configuration,
                                       r.optimality ? &*r.optimality : nullptr, r.given_tolerance,
                                       coordinates});
-      report::write_file(dir / (r.label + ".gp"), text.str());
+      report::write_file(dir / (label + ".gp"), text.str());
     }
   }
   print_result(run, o.out);

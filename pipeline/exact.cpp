@@ -59,9 +59,9 @@ std::string thirty_decimals(const std::string& text) {
 
 }  // namespace
 
-std::string coordinates_text(const ExactResult& result) {
+std::string coordinates_text(const ExactResult& result, const std::string& label) {
   std::string out = "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
-  out += fmt::format("# n: {}\n# label: {}\n# d: {}\n", result.n, result.label,
+  out += fmt::format("# n: {}\n# label: {}\n# d: {}\n", result.n, label,
                      result.d.empty() ? std::string("") : thirty_decimals(result.d));
   for (const auto& p : result.input.given) out += p[0] + " " + p[1] + "\n";
   return out;

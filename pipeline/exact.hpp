@@ -57,6 +57,6 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
 
 // The given points as a coordinate file in the atlas's layout ("# n:", "# label:", "# d:" and
 // "x y" lines with 30 decimals), for a certificate to name when no packing file was read.
-std::string coordinates_text(const ExactResult& result);
+std::string coordinates_text(const ExactResult& result, const std::string& label);
 
 }  // namespace tripack::pipeline

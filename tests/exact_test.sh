@@ -55,6 +55,17 @@ for kind in a b c d; do
   cmp -s "$cert" "$tmp/tampered/$kind.gp" && bad "tampering ($kind) changed nothing" && continue
   expect_reject "t22a tampered ($kind)" "$tmp/tampered/$kind.gp"
 done
+# Class members as built: format-2 certificates naming the coordinate file written beside them
+# (no atlas file exists for them), accepted by the checker with both claims.
+mkdir -p "$tmp/members"
+"$TRIPACK" exact --class four-delta --k 2..3 --digits 120 --certificates "$tmp/members" --csv >/dev/null 2>&1 ||
+  bad "exact --class four-delta --k 2..3 --certificates failed"
+out=$(bash "$CHECK" "$tmp/members"/*.gp 2>&1)
+if [ $? -eq 0 ] && grep -qx '2 certificates: 2 accepted, 0 rejected' <<<"$out" &&
+  [ "$(grep -c '^cert_format = 2;' "$tmp/members"/*.gp | awk -F: '{s += $2} END {print s}')" = 2 ] &&
+  [ -f "$tmp/members/four-delta_k2.txt" ]; then ok; else
+  bad "the member certificates (format 2) should be accepted:"$'\n'"$(grep -E 'FAIL|certificates' <<<"$out")"; fi
+
 # The 4Delta(k) packings as built, k = 1..50 (n = 4 .. 5100): P equals the minimal polynomial of
 # the closed form d = 1/(a + sqrt 3), a = 2k - 2 (docs/classes.md): (a^2 - 3) x^2 - 2a x + 1,
 # made primitive with a positive leading coefficient (k = 1: 3x^2 - 1).

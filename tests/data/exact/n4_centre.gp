@@ -4,9 +4,11 @@
 \\ corner; the corners are 1 apart (> d). The centroid is at distance sqrt(3)/6 = 0.2887 from each
 \\ side, so it has no wall bond. d^2 = 1/3: P = 3*x^2 - 1 (roots +-0.57735). In K = Q[t]/(t^2 - 3)
 \\ with t0 = +sqrt(3): d = t/3.
-\\ given: sqrt(3)/2 and sqrt(3)/6 rounded to 36 decimals (gp: round(v * 10^36) at \p 100).
+\\ given: sqrt(3)/2 and sqrt(3)/6 rounded to 30 decimals (gp: round(v * 10^30) at \p 100).
 \\ A value spanning several lines is wrapped in { } (gp file syntax: a newline outside braces
 \\ ends the statement).
+\\ Coordinates file (provenance): tests/data/atlas-checker/n4-centre.txt, the given points in its 30-decimal
+\\ format; check with checker/check_exact.sh --atlas tests/data/atlas-checker.
 cert_format = 1;
 label = "n4-centre"; n = 4;
 P = 3*x^2 - 1;
@@ -18,7 +20,10 @@ sqrt3_in_K = t;
 points = [[0, 0], [1, 0], [1/2, t/2], [1/2, t/6]];
 rattlers = [];
 bonds = [[1, 4], [2, 4], [3, 4], [1, -1], [1, -2], [2, -1], [2, -3], [3, -2], [3, -3]];
-{given = [[0, 0], [1, 0], [1/2, 866025403784438646763723170752936183/10^36],
-          [1/2, 288675134594812882254574390250978728/10^36]];}
+{given = [
+  [0/10^30, 0/10^30],
+  [1000000000000000000000000000000/10^30, 0/10^30],
+  [500000000000000000000000000000/10^30, 866025403784438646763723170753/10^30],
+  [500000000000000000000000000000/10^30, 288675134594812882254574390251/10^30]];}
 given_tolerance = 10^-25;
 claims = ["existence"];

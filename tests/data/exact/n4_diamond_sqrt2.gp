@@ -17,8 +17,10 @@
 \\ (sqrt(3) - 1)/4 = (-t^3 + 11*t - 2)/8, (3 - sqrt(3))/4 = (t^3 - 11*t + 6)/8,
 \\ (5 - sqrt(3))/4 = (t^3 - 11*t + 10)/8, (3 - sqrt(3))/2 = (t^3 - 11*t + 6)/4.
 \\ Points: 1 = B, 2 = L, 3 = R, 4 = U.
-\\ given: the coordinates rounded to 36 decimals (gp: round(v * 10^36) at \p 100).
+\\ given: the coordinates rounded to 30 decimals (gp: round(v * 10^30) at \p 100).
 \\ A value spanning several lines is wrapped in { } (gp file syntax).
+\\ Coordinates file (provenance): tests/data/atlas-checker/n4-diamond-sqrt2.txt, the given points in its 30-decimal
+\\ format; check with checker/check_exact.sh --atlas tests/data/atlas-checker.
 cert_format = 1;
 label = "n4-diamond-sqrt2"; n = 4;
 P = 16*x^4 - 48*x^2 + 9;
@@ -33,9 +35,10 @@ sqrt3_in_K = (11*t - t^3)/2;
            [1/2, (t^3 - 11*t + 6)/4]];}
 rattlers = [];
 bonds = [[1, 2], [1, 3], [2, 4], [3, 4], [1, -1], [2, -2], [3, -3]];
-{given = [[1/2, 0],
-          [183012701892219323381861585376468092/10^36, 316987298107780676618138414623531908/10^36],
-          [816987298107780676618138414623531908/10^36, 316987298107780676618138414623531908/10^36],
-          [1/2, 633974596215561353236276829247063817/10^36]];}
+{given = [
+  [500000000000000000000000000000/10^30, 0/10^30],
+  [183012701892219323381861585376/10^30, 316987298107780676618138414624/10^30],
+  [816987298107780676618138414624/10^30, 316987298107780676618138414624/10^30],
+  [500000000000000000000000000000/10^30, 633974596215561353236276829247/10^30]];}
 given_tolerance = 10^-25;
 claims = ["existence"];

@@ -14,7 +14,9 @@
 \\ 2 the pair row x2 - x3 = (0, -s/4) is balanced by the bottom wall (0, 1)*s/4; at the apex the pair
 \\ row (0, s/4) by (s, -1)*s/8 + (-s, -1)*s/8 = (0, -s/4). All positive, yet disks 2 and 3 can
 \\ slide sideways at first order (G y = 0 for y = moving x2 and x3).
-\\ given: sqrt(3)/2 and sqrt(3)/4 rounded to 36 decimals (gp: round(v * 10^36) at \p 100).
+\\ given: sqrt(3)/2 and sqrt(3)/4 rounded to 30 decimals (gp: round(v * 10^30) at \p 100).
+\\ Coordinates file (provenance): tests/data/atlas-checker/n3-collinear.txt, the given points in its 30-decimal
+\\ format; check with checker/check_exact.sh --atlas tests/data/atlas-checker.
 cert_format = 1;
 label = "n3-collinear"; n = 3;
 P = 16*x^2 - 3;
@@ -27,7 +29,9 @@ points = [[1/2, t/2], [1/2, 0], [1/2, t/4]];
 rattlers = [];
 bonds = [[1, 3], [2, 3], [1, -2], [1, -3], [2, -1]];
 stress = [1, 1, t/8, t/8, t/4];
-{given = [[1/2, 866025403784438646763723170752936183/10^36], [1/2, 0],
-          [1/2, 433012701892219323381861585376468092/10^36]];}
+{given = [
+  [500000000000000000000000000000/10^30, 866025403784438646763723170753/10^30],
+  [500000000000000000000000000000/10^30, 0/10^30],
+  [500000000000000000000000000000/10^30, 433012701892219323381861585376/10^30]];}
 given_tolerance = 10^-25;
 claims = ["existence", "strict-local-optimum"];

@@ -13,6 +13,8 @@
 \\ = (-3/2, -sqrt3/2); its wall rows (0, 1) (bottom) and (sqrt3, -1) (left) with stresses sqrt3 and
 \\ sqrt3/2 give (3/2, sqrt3 - sqrt3/2) = (3/2, sqrt3/2): the sum is 0. Corners 2 and 3 are mirror
 \\ images / rotations of corner 1.
+\\ Coordinates file (provenance): tests/data/atlas-checker/n3-corners-slo.txt, the given points in its 30-decimal
+\\ format; check with checker/check_exact.sh --atlas tests/data/atlas-checker.
 cert_format = 1;
 label = "n3-corners-slo"; n = 3;
 P = x - 1;
@@ -25,6 +27,9 @@ points = [[0, 0], [1, 0], [1/2, t/2]];
 rattlers = [];
 bonds = [[1, 2], [1, 3], [2, 3], [1, -1], [1, -2], [2, -1], [2, -3], [3, -2], [3, -3]];
 stress = [1, 1, 1, t, t/2, t, t/2, t/2, t/2];
-given = [[0, 0], [1, 0], [1/2, 866025403784438646763723170752936183/10^36]];
+{given = [
+  [0/10^30, 0/10^30],
+  [1000000000000000000000000000000/10^30, 0/10^30],
+  [500000000000000000000000000000/10^30, 866025403784438646763723170753/10^30]];}
 given_tolerance = 10^-25;
 claims = ["existence", "strict-local-optimum"];

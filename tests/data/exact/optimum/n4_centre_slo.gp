@@ -15,6 +15,8 @@
 \\ (1/2, s/3 - s/6) = (1/2, s/6). Positive at t0: 1, 0.577, 0.289.
 \\ given: as in ../n4_centre.gp.
 \\ A value spanning several lines is wrapped in { } (gp file syntax).
+\\ Coordinates file (provenance): tests/data/atlas-checker/n4-centre-slo.txt, the given points in its 30-decimal
+\\ format; check with checker/check_exact.sh --atlas tests/data/atlas-checker.
 cert_format = 1;
 label = "n4-centre-slo"; n = 4;
 P = 3*x^2 - 1;
@@ -28,7 +30,10 @@ rattlers = [];
 bonds = [[1, 4], [2, 4], [3, 4], [1, -1], [1, -2], [2, -1], [2, -3], [3, -2], [3, -3]];
 {stress = [1, 1, 1, (11*t - t^3)/6, (11*t - t^3)/12, (11*t - t^3)/6, (11*t - t^3)/12,
            (11*t - t^3)/12, (11*t - t^3)/12];}
-{given = [[0, 0], [1, 0], [1/2, 866025403784438646763723170752936183/10^36],
-          [1/2, 288675134594812882254574390250978728/10^36]];}
+{given = [
+  [0/10^30, 0/10^30],
+  [1000000000000000000000000000000/10^30, 0/10^30],
+  [500000000000000000000000000000/10^30, 866025403784438646763723170753/10^30],
+  [500000000000000000000000000000/10^30, 288675134594812882254574390251/10^30]];}
 given_tolerance = 10^-25;
 claims = ["existence", "strict-local-optimum"];

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# One pass of the exact atlas over the rows still "none" (docs/exact.md "Coverage"), one n at a
+# time so that a row that runs too long is stopped (`timeout`) without losing the others: each
+# finished row is appended to data/atlas-exact.csv at once (certificate in data/exact/), so the pass
+# is resumable: rerun it and the rows already proven are skipped. Every row's wall time and exit
+# status go to data/exact-atlas-runs.log (status 124: stopped at the time limit).
+# Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
+#   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
+set -u
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+TRIPACK=${TRIPACK:-$root/build/tripack}
+atlas=$1 first=$2 digits=$3 degree=$4 seconds=$5
+shift 5
+log=$root/data/exact-atlas-runs.log
+[ -f "$log" ] || echo "# n first_digits digits max_degree time_limit_s wall_s exit_status" >"$log"
+for n in "$@"; do
+  start=$(date +%s.%N)
+  timeout "$seconds" "$TRIPACK" exact-atlas --atlas "$atlas" --out "$root/data" --n "$n" --retry-none \
+    --first-digits "$first" --digits "$digits" --max-degree "$degree" --threads 1 >/dev/null 2>&1
+  status=$?
+  wall=$(echo "$(date +%s.%N) - $start" | bc)
+  printf '%s %s %s %s %s %.1f %s\n' "$n" "$first" "$digits" "$degree" "$seconds" "$wall" "$status" >>"$log"
+  echo "n = $n: exit $status, ${wall%.*} s"
+done
