@@ -165,7 +165,8 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     result.seconds_existence += seconds_since(t3);
     if (result.optimality->proven) {
       result.proof = "exact";
-      result.reason = given_note.empty() ? "" : given_note.substr(2);
+      result.reason = fmt::format("P from {} digits, the field and coordinates from {}{}",
+                                  result.polynomial.digits, D, given_note);
     } else {
       result.reason = "statement (II): " + result.optimality->reason + given_note;
     }
