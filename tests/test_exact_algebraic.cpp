@@ -7,6 +7,7 @@
 #include <string>
 
 #include "exact/algebraic.hpp"
+#include "exact/configuration.hpp"
 
 namespace tripack::exact {
 namespace {
@@ -104,6 +105,39 @@ TEST(ExactAlgebraic, NoRelationForPiAtLowDegree) {
 TEST(ExactAlgebraic, BadInputIsRefused) {
   EXPECT_THROW(minimal_polynomial("abc", 60, 4), std::invalid_argument);
   EXPECT_THROW(minimal_polynomial("0.5", 10, 4), std::invalid_argument);
+}
+
+// Two disks, d = 1/2: A at the corner (0,0) on the bottom and left walls, B at distance d on
+// the 45-degree line, B = (sqrt2/4, sqrt2/4). B's coordinates are outside Q(d, sqrt3) = Q(sqrt3):
+// statement (I) needs the quadratic extension Q(sqrt3)(w), w = sqrt2/4, w^2 = 1/8, a field of
+// degree 4 (its generator's minimal polynomial is the checked irreducible one).
+TEST(ExactConfiguration, CoordinatesOutsideQdSqrt3GetAQuadraticExtension) {
+  const int digits = 120;
+  mpfr_t x;
+  mpfr_init2(x, 1000);
+  mpfr_sqrt_ui(x, 2, MPFR_RNDN);
+  mpfr_div_ui(x, x, 4, MPFR_RNDN);
+  const std::string b = decimal(x, 2 * digits);
+  mpfr_clear(x);
+  // fixed notation: "3.535...e-01" -> "0.3535..."
+  const auto e = b.find('e');
+  const std::string mantissa = b.substr(0, e);
+  const std::string fixed = "0." + mantissa.substr(0, 1) + mantissa.substr(2);
+  MinimalPolynomial p;
+  p.found = true;
+  p.polynomial.coefficients = {"-1", "2"};
+  p.root = {"49/100", "51/100"};
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(0, Side::Left)};
+  in.d = "0.5";
+  in.points = {{"0", "0"}, {fixed, fixed}};
+  in.given = {{"0", "0"}, {fixed.substr(0, 32), fixed.substr(0, 32)}};
+  in.digits = digits;
+  const ExactConfiguration c = prove_existence(in, p);
+  ASSERT_TRUE(c.proven) << c.reason;
+  EXPECT_EQ(c.field.degree(), 4);  // [Q(sqrt3, sqrt2) : Q]
+  EXPECT_LT(c.largest_offset, 1e-25);
 }
 
 }  // namespace
