@@ -1,5 +1,7 @@
 #include "exact/flint_tools.hpp"
 
+#include "exact/lll.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -51,9 +53,7 @@ std::optional<std::vector<std::string>> integer_relation(const std::vector<const
     arb_mul_fmpz(scaled.value, values[static_cast<std::size_t>(i)], scale.value, prec);
     arf_get_fmpz(fmpz_mat_entry(lattice, i, k), arb_midref(scaled.value), ARF_RND_NEAR);
   }
-  fmpz_lll_t context;
-  fmpz_lll_context_init_default(context);
-  fmpz_lll(lattice, nullptr, context);
+  reduce_rows(lattice);
   std::vector<std::string> coefficients;
   bool zero = true;
   Fmpz height;
