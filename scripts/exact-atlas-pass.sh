@@ -6,11 +6,17 @@
 # status go to data/exact-atlas-runs.log (status 124: stopped at the time limit).
 # Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
 #   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
+# ATLAS.csv = rank1: only the best packing of each n (data/atlas.csv's rank-1 rows, written to
+# data/atlas-rank1.csv, which is not kept in git: it is made again from data/atlas.csv each time).
 set -u
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 TRIPACK=${TRIPACK:-$root/build/tripack}
 atlas=$1 first=$2 digits=$3 degree=$4 seconds=$5
 shift 5
+if [ "$atlas" = rank1 ]; then
+  atlas=$root/data/atlas-rank1.csv
+  awk -F, 'NR == 1 || $2 == 1' "$root/data/atlas.csv" >"$atlas"
+fi
 log=$root/data/exact-atlas-runs.log
 [ -f "$log" ] || echo "# n first_digits digits max_degree time_limit_s wall_s exit_status" >"$log"
 for n in "$@"; do
