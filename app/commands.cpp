@@ -471,9 +471,9 @@ int cmd_exact(const GlobalOptions& g, const ExactOptions& o) {
                           .generic_string();
       }
       std::ostringstream text;
-      exact::write_certificate(text, {label, &r.input, &r.polynomial, &*r.configuration,
-                                      r.optimality ? &*r.optimality : nullptr, r.given_tolerance,
-                                      coordinates});
+      exact::write_certificate(
+          text, {label, &r.input, &r.polynomial, &*r.configuration,
+                 r.optimality ? &*r.optimality : nullptr, r.given_tolerance, coordinates});
       report::write_file(dir / (label + ".gp"), text.str());
     }
   }

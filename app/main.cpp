@@ -323,7 +323,8 @@ Action add_exact(CLI::App& cli, const GlobalOptions& g, ExactOptions& o) {
   c->add_option("--digits", o.digits, "D: digits the relation is found from (default 300)")
       ->check(CLI::Range(40, 20000));
   c->add_option("--first-digits", o.first_digits,
-                "try D = this, twice this, ... up to --digits until the row is proven (default: --digits only)")
+                "try D = this, twice this, ... up to --digits until the row is proven (default: "
+                "--digits only)")
       ->check(CLI::Range(40, 20000));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));
@@ -345,7 +346,8 @@ Action add_exact_atlas(CLI::App& cli, const GlobalOptions& g, ExactAtlasOptions&
   c->add_option("--n", o.n_range, "only these n: A..B, N or a comma-separated list of them");
   c->add_option("--digits", o.digits, "D (default 300)")->check(CLI::Range(40, 20000));
   c->add_option("--first-digits", o.first_digits,
-                "try D = this, twice this, ... up to --digits until the row is proven (default: --digits only)")
+                "try D = this, twice this, ... up to --digits until the row is proven (default: "
+                "--digits only)")
       ->check(CLI::Range(40, 20000));
   c->add_option("--max-degree", o.max_degree, "largest degree of P tried (default 48)")
       ->check(CLI::Range(1, 200));

@@ -32,16 +32,19 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
   const ConfigurationInput& in = *data.input;
   const ExactConfiguration& c = *data.configuration;
   const int format = data.coordinates_file.empty() ? 1 : 2;
-  out << fmt::format("\\\\ tripack exact certificate (format {}): read by checker/check_exact.gp\n", format);
+  out << fmt::format("\\\\ tripack exact certificate (format {}): read by checker/check_exact.gp\n",
+                     format);
   out << fmt::format("cert_format = {};\n", format);
   out << fmt::format("label = \"{}\"; n = {};\n", data.label, in.n);
   if (format == 2) {
-    out << "\\\\ the packing's coordinate file (relative to this file): n, label and given come from it\n";
+    out << "\\\\ the packing's coordinate file (relative to this file): n, label and given come "
+           "from it\n";
     out << fmt::format("coordinates_file = \"{}\";\n", data.coordinates_file);
   }
   out << "\\\\ the minimal polynomial of d over Q; d is its only root in [d_low, d_high]\n";
   out << fmt::format("P = {};\n", data.polynomial->polynomial.pari("x"));
-  out << fmt::format("d_low = {}; d_high = {};\n", data.polynomial->root.low, data.polynomial->root.high);
+  out << fmt::format("d_low = {}; d_high = {};\n", data.polynomial->root.low,
+                     data.polynomial->root.high);
   out << "\\\\ the field K = Q[t]/(K), embedded at its only root t0 in [t_low, t_high]\n";
   out << fmt::format("K = {};\n", c.field.pari("t"));
   out << fmt::format("t_low = {}; t_high = {};\n", c.embedding.low, c.embedding.high);
@@ -51,7 +54,8 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
   // Multi-line values in braces: GP ends a statement at a newline outside { }.
   out << "{points = [";
   for (std::size_t i = 0; i < c.points.size(); ++i)
-    out << (i ? ",\n  " : "\n  ") << "[" << c.points[i][0].pari("t") << ", " << c.points[i][1].pari("t") << "]";
+    out << (i ? ",\n  " : "\n  ") << "[" << c.points[i][0].pari("t") << ", "
+        << c.points[i][1].pari("t") << "]";
   out << "];}\n";
   out << "rattlers = [";
   for (std::size_t i = 0; i < in.rattlers.size(); ++i) out << (i ? ", " : "") << in.rattlers[i] + 1;
@@ -66,10 +70,11 @@ void write_certificate(std::ostream& out, const CertificateData& data) {
   out << "\\\\ the packing as given; every exact point lies within given_tolerance of it\n";
   out << "{given = [";
   for (std::size_t i = 0; i < in.given.size(); ++i)
-    out << (i ? ",\n  " : "\n  ") << "[" << gp_rational(in.given[i][0]) << ", " << gp_rational(in.given[i][1])
-        << "]";
+    out << (i ? ",\n  " : "\n  ") << "[" << gp_rational(in.given[i][0]) << ", "
+        << gp_rational(in.given[i][1]) << "]";
   out << "];}\n";
-  out << fmt::format("given_tolerance = {};\n", data.given_tolerance == "1e-25" ? "10^-25" : data.given_tolerance);
+  out << fmt::format("given_tolerance = {};\n",
+                     data.given_tolerance == "1e-25" ? "10^-25" : data.given_tolerance);
   if (data.optimality && data.optimality->proven) {
     out << "\\\\ a strictly positive self-stress, per bond (G^T stress = 0 in K; G of full rank)\n";
     out << "{stress = [";

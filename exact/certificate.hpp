@@ -17,11 +17,12 @@ struct CertificateData {
   const ConfigurationInput* input = nullptr;
   const MinimalPolynomial* polynomial = nullptr;
   const ExactConfiguration* configuration = nullptr;  // proven
-  const StrictOptimality* optimality = nullptr;        // when proven: claimed too
+  const StrictOptimality* optimality = nullptr;       // when proven: claimed too
   std::string given_tolerance = "1e-25";
   // The coordinate file `given` was read from (the atlas's, with the label and n in its header),
   // relative to the certificate's directory: format 2 names it, and the checker compares n, the
-  // label and every given point with it. Empty: format 1 (the checker looks for ../atlas/LABEL.txt).
+  // label and every given point with it. Empty: format 1 (the checker looks for
+  // ../atlas/LABEL.txt).
   std::string coordinates_file;
 };
 

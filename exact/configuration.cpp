@@ -1,5 +1,6 @@
 #include "exact/configuration.hpp"
 
+#include <flint/fmpq_mat.h>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -9,8 +10,6 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
-
-#include <flint/fmpq_mat.h>
 
 #include "exact/flint_tools.hpp"
 
@@ -37,14 +36,14 @@ Balls powers_of(const arb_t x, int count, slong prec) {
 // The value as a rational combination of a basis: value = -(c_1 b_1 + c_2 b_2 + ...) / c_0 from
 // the integer relation among [value, b_1, b_2, ...]. basis(pass, prec) gives the basis balls of D
 // digits (pass 0) or 2D (pass 1). The relation is looked for from 100, 200, 400, ... digits up to
-// min(D, largest) (most coordinates need far fewer than D, and LLL's cost grows with the digits), and taken
-// when it vanishes at the 2D-digit values (doubled precision: a relation fitted to fewer digits
-// that is not a true one misses by about 10^-(its digits) there). No "few digits" rule beyond
-// that: every element found is verified exactly afterwards (the identities in K), so a spurious
-// relation can only fail, never prove.
+// min(D, largest) (most coordinates need far fewer than D, and LLL's cost grows with the digits),
+// and taken when it vanishes at the 2D-digit values (doubled precision: a relation fitted to fewer
+// digits that is not a true one misses by about 10^-(its digits) there). No "few digits" rule
+// beyond that: every element found is verified exactly afterwards (the identities in K), so a
+// spurious relation can only fail, never prove.
 std::optional<std::vector<std::string>> combination_of(
-    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis, int digits,
-    int largest) {
+    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis,
+    int digits, int largest) {
   const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
   const Balls balls = basis(0, prec), balls2 = basis(1, prec2);
   std::vector<const arb_struct*> values{value};
@@ -91,8 +90,8 @@ std::optional<std::vector<std::string>> combination_of(
 
 // The value as an element of Q(t): a combination of 1, t, ..., t^(k-1).
 std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_t value2,
-                                                   const arb_t t, const arb_t t2, int k,
-                                                   int digits, int largest) {
+                                                   const arb_t t, const arb_t t2, int k, int digits,
+                                                   int largest) {
   const auto combination = combination_of(
       value, value2, [&](int pass, slong prec) { return powers_of(pass ? t2 : t, k, prec); },
       digits, largest);
@@ -109,7 +108,8 @@ void decimal_to_fmpq(fmpq_t out, std::string text, int keep_digits) {
   const auto dot = text.find('.');
   std::string integer = dot == std::string::npos ? text : text.substr(0, dot);
   std::string fraction = dot == std::string::npos ? "" : text.substr(dot + 1);
-  if (static_cast<int>(fraction.size()) > keep_digits) fraction.resize(static_cast<std::size_t>(keep_digits));
+  if (static_cast<int>(fraction.size()) > keep_digits)
+    fraction.resize(static_cast<std::size_t>(keep_digits));
   flint::Fmpz numerator, denominator;
   const std::string digits = (integer.empty() ? "0" : integer) + fraction;
   if (fmpz_set_str(numerator.value, digits.c_str(), 10) != 0)
@@ -139,7 +139,6 @@ double lower_bound(const arb_t x) {
   arf_clear(bound);
   return out;
 }
-
 
 // Q(d, sqrt 3) as the tower Q(d)[s]/(s^2 - 3): an element a + b s with a, b in Q[d]/(P).
 struct TowerElement {
@@ -247,10 +246,12 @@ class BasisChange {
     fmpq_mat_t column, result;
     fmpq_mat_init(column, size_, 1);
     fmpq_mat_init(result, size_, 1);
-    for (int r = 0; r < size_; ++r) fmpq_set_str(fmpq_mat_entry(column, r, 0), v[static_cast<std::size_t>(r)].c_str(), 10);
+    for (int r = 0; r < size_; ++r)
+      fmpq_set_str(fmpq_mat_entry(column, r, 0), v[static_cast<std::size_t>(r)].c_str(), 10);
     fmpq_mat_mul(result, to_t_, column);
     FmpqPoly poly;
-    for (int r = 0; r < size_; ++r) fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
+    for (int r = 0; r < size_; ++r)
+      fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
     fmpq_mat_clear(column);
     fmpq_mat_clear(result);
     return flint::strings_from_fmpq_poly(poly.value);
@@ -330,7 +331,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     }
   }
   if (k == 0) {
-    out.reason = fmt::format("no field Q(d, sqrt 3) of degree <= {} found at {} digits", 2 * m, digits);
+    out.reason =
+        fmt::format("no field Q(d, sqrt 3) of degree <= {} found at {} digits", 2 * m, digits);
     return out;
   }
   // Every non-rattler coordinate in K0 = Q(d, sqrt 3) (the field above), or in a quadratic
@@ -355,7 +357,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     for (int root = 0; root < in.n; ++root) {
       if (seen[static_cast<std::size_t>(root)]) continue;
       seen[static_cast<std::size_t>(root)] = 1;
-      for (std::size_t tail = (order.push_back(root), order.size() - 1); tail < order.size(); ++tail)
+      for (std::size_t tail = (order.push_back(root), order.size() - 1); tail < order.size();
+           ++tail)
         for (int j : neighbours[static_cast<std::size_t>(order[tail])])
           if (!seen[static_cast<std::size_t>(j)]) {
             seen[static_cast<std::size_t>(j)] = 1;
@@ -369,7 +372,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     Balls basis = powers_of(pass ? d2.value : d.value, m, p);
     for (int i = 0; i < m; ++i) {
       basis.push_back(std::make_unique<Arb>());
-      arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value, pass ? s2.value : s.value, p);
+      arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value,
+              pass ? s2.value : s.value, p);
     }
     return basis;
   };
@@ -380,13 +384,15 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   Arb w, w2;
   bool extended = false;
   RationalPolynomial alpha, beta;
-  auto in_k0 = [&](const arb_t v, const arb_t v2, int largest) -> std::optional<RationalPolynomial> {
+  auto in_k0 = [&](const arb_t v, const arb_t v2,
+                   int largest) -> std::optional<RationalPolynomial> {
     const auto c = combination_of(v, v2, k0_basis, digits, largest);
     if (!c) return std::nullopt;
     return k0_of(*c);
   };
   // v = a + b w with a, b in K0.
-  auto in_l = [&](const arb_t v, const arb_t v2, int largest) -> std::optional<std::array<RationalPolynomial, 2>> {
+  auto in_l = [&](const arb_t v, const arb_t v2,
+                  int largest) -> std::optional<std::array<RationalPolynomial, 2>> {
     const auto c = combination_of(
         v, v2,
         [&](int pass, slong p) {
@@ -412,7 +418,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   };
   const RationalPolynomial zero{{"0"}};
   // Found coordinates as a + b w (b = 0 while there is no extension), and their balls.
-  std::vector<std::array<std::array<RationalPolynomial, 2>, 2>> found(static_cast<std::size_t>(in.n));
+  std::vector<std::array<std::array<RationalPolynomial, 2>, 2>> found(
+      static_cast<std::size_t>(in.n));
   std::vector<std::array<std::unique_ptr<Arb>, 4>> balls(static_cast<std::size_t>(in.n));
   for (int i : order)
     for (int c = 0; c < 2; ++c) {
@@ -444,7 +451,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       }
       if (!element && extended) element = in_l(v->value, v2->value, digits);
       if (!element && !extended) {
-        if (const auto a = in_k0(v->value, v2->value, digits)) element = std::array<RationalPolynomial, 2>{*a, zero};
+        if (const auto a = in_k0(v->value, v2->value, digits))
+          element = std::array<RationalPolynomial, 2>{*a, zero};
       }
       if (!element && !extended) {
         // w = v: w^2 = -(alpha w + beta) from the relation among [w^2, w K0-basis, K0-basis].
@@ -469,8 +477,10 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
         }
       }
       if (!element) {
-        out.reason = fmt::format("coordinate {} of point {} is in neither the field of degree {} nor a quadratic extension of it{} at {} digits",
-                                 c == 0 ? "x" : "y", i + 1, k, extended ? " (the one found)" : "", digits);
+        out.reason = fmt::format(
+            "coordinate {} of point {} is in neither the field of degree {} nor a quadratic "
+            "extension of it{} at {} digits",
+            c == 0 ? "x" : "y", i + 1, k, extended ? " (the one found)" : "", digits);
         return out;
       }
       found[iu][cu] = *element;
@@ -480,7 +490,9 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   out.points.resize(static_cast<std::size_t>(in.n));
   if (!extended) {
     for (int i = 0; i < in.n; ++i)
-      for (int c = 0; c < 2; ++c) out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] = found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
+      for (int c = 0; c < 2; ++c)
+        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
+            found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
   } else {
     // L over Q: the basis t^0..t^(k-1), t^0 w..t^(k-1) w. theta = t + j w is primitive when the
     // characteristic polynomial of multiplication by theta (degree 2k) is irreducible.
@@ -489,7 +501,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     k0.set(fa.value, alpha);
     k0.set(fb.value, beta);
     const int size = 2 * k;
-    auto coordinates_of = [&](fmpq_mat_t column, slong col, const fmpq_poly_t a, const fmpq_poly_t b) {
+    auto coordinates_of = [&](fmpq_mat_t column, slong col, const fmpq_poly_t a,
+                              const fmpq_poly_t b) {
       for (int r = 0; r < k; ++r) {
         fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, r, col), a, r);
         fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, k + r, col), b, r);
@@ -548,7 +561,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     if (!chosen) {
       fmpq_mat_clear(powers);
       fmpq_mat_clear(inverse);
-      out.reason = fmt::format("no primitive element t + j w (j = 1..5) of the extension of degree {}", size);
+      out.reason = fmt::format(
+          "no primitive element t + j w (j = 1..5) of the extension of degree {}", size);
       return out;
     }
     // Elements a + b w as polynomials in theta: inverse * coordinates.
@@ -562,7 +576,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       coordinates_of(column, 0, pa.value, pb.value);
       fmpq_mat_mul(result, inverse, column);
       FmpqPoly poly;
-      for (int r = 0; r < size; ++r) fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
+      for (int r = 0; r < size; ++r)
+        fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
       return flint::strings_from_fmpq_poly(poly.value);
     };
     for (int i = 0; i < in.n; ++i)
@@ -607,7 +622,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     fmpq_poly_one(power.value);
     Fmpq c;
     for (slong i = 0; i <= m; ++i) {
-      fmpq_set_str(c.value, d_poly.polynomial.coefficients[static_cast<std::size_t>(i)].c_str(), 10);
+      fmpq_set_str(c.value, d_poly.polynomial.coefficients[static_cast<std::size_t>(i)].c_str(),
+                   10);
       fmpq_poly_scalar_mul_fmpq(term.value, power.value, c.value);
       fmpq_poly_add(value.value, value.value, term.value);
       field.mul(power.value, power.value, dk.value);
@@ -667,8 +683,10 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
         fmpq_poly_sub(e.value, e.value, f.value);
       }
       if (!field.is_zero(e.value)) {
-        out.reason = b.is_wall() ? fmt::format("the wall bond of point {} is not exact in the field", b.a + 1)
-                                 : fmt::format("the bond {}-{} is not exact in the field", b.a + 1, b.b + 1);
+        out.reason =
+            b.is_wall()
+                ? fmt::format("the wall bond of point {} is not exact in the field", b.a + 1)
+                : fmt::format("the bond {}-{} is not exact in the field", b.a + 1, b.b + 1);
         return out;
       }
     }
@@ -701,7 +719,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       slot = std::make_unique<Arb>();
       evaluate(slot->value, out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]);
       flint::set_decimal(given.value,
-                         in.given[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)], 30, prec2);
+                         in.given[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)], 30,
+                         prec2);
       arb_get_mid_arb(given.value, given.value);  // the given point itself, exactly
       arb_sub(diff.value, slot->value, given.value, prec2);
       out.largest_offset = std::max(out.largest_offset, upper_bound(diff.value));
@@ -722,7 +741,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       arb_addmul(dx.value, dy.value, dy.value, prec2);
       arb_sub(r.value, dx.value, dd.value, prec2);  // |pi - pj|^2 - d^2
       if (!arb_is_positive(r.value)) {
-        out.reason = fmt::format("points {} and {} are not proven farther apart than d", i + 1, j + 1);
+        out.reason =
+            fmt::format("points {} and {} are not proven farther apart than d", i + 1, j + 1);
         return out;
       }
       arb_div(r.value, r.value, dd.value, prec2);
@@ -742,7 +762,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
         arb_sub(r.value, r.value, xi[1]->value, prec2);
       }
       if (!arb_is_positive(r.value)) {
-        out.reason = fmt::format("point {} is not proven inside the {} side", i + 1, side_name(side));
+        out.reason =
+            fmt::format("point {} is not proven inside the {} side", i + 1, side_name(side));
         return out;
       }
       arb_div(r.value, r.value, dv.value, prec2);
@@ -750,7 +771,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     }
   }
   if (!(out.largest_offset < 1e-25)) {
-    out.reason = fmt::format("the exact points lie {:.2g} from the given ones (10^-25 asked)", out.largest_offset);
+    out.reason = fmt::format("the exact points lie {:.2g} from the given ones (10^-25 asked)",
+                             out.largest_offset);
     return out;
   }
   out.proven = true;

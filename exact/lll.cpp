@@ -9,11 +9,13 @@ void reduce_rows(fmpz_mat_t lattice) {
   fplll::ZZ_mat<mpz_t> basis(static_cast<int>(rows), static_cast<int>(cols));
   for (slong i = 0; i < rows; ++i)
     for (slong j = 0; j < cols; ++j)
-      fmpz_get_mpz(basis[static_cast<int>(i)][static_cast<int>(j)].get_data(), fmpz_mat_entry(lattice, i, j));
+      fmpz_get_mpz(basis[static_cast<int>(i)][static_cast<int>(j)].get_data(),
+                   fmpz_mat_entry(lattice, i, j));
   fplll::lll_reduction(basis);
   for (slong i = 0; i < rows; ++i)
     for (slong j = 0; j < cols; ++j)
-      fmpz_set_mpz(fmpz_mat_entry(lattice, i, j), basis[static_cast<int>(i)][static_cast<int>(j)].get_data());
+      fmpz_set_mpz(fmpz_mat_entry(lattice, i, j),
+                   basis[static_cast<int>(i)][static_cast<int>(j)].get_data());
 }
 
 }  // namespace tripack::exact

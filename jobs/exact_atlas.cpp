@@ -39,7 +39,8 @@ std::set<std::string> labels_in(const fs::path& csv, bool except_none) {
 
 // The table in the atlas's order (rows of labels the atlas no longer has go last), written to a
 // temporary file and renamed over the old one.
-void sort_table(const fs::path& csv, const std::vector<std::string>& order, const std::string& header) {
+void sort_table(const fs::path& csv, const std::vector<std::string>& order,
+                const std::string& header) {
   std::map<std::string, std::size_t> rank;
   for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
   std::ifstream in(csv);
@@ -55,7 +56,8 @@ void sort_table(const fs::path& csv, const std::vector<std::string>& order, cons
     last[label] = line;
   }
   std::vector<std::pair<std::size_t, std::string>> rows;
-  for (const auto& label : labels) rows.emplace_back(rank.count(label) ? rank[label] : order.size(), last[label]);
+  for (const auto& label : labels)
+    rows.emplace_back(rank.count(label) ? rank[label] : order.size(), last[label]);
   std::stable_sort(rows.begin(), rows.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   const fs::path temporary = csv.string() + ".tmp";
@@ -70,7 +72,9 @@ void sort_table(const fs::path& csv, const std::vector<std::string>& order, cons
 
 }  // namespace
 
-std::string exact_csv_header() { return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds"; }
+std::string exact_csv_header() {
+  return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds";
+}
 
 std::string exact_csv_row(const pipeline::ExactResult& r) {
   const auto& p = r.polynomial;
@@ -90,7 +94,8 @@ std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
   for (int number = 2; std::getline(in, line); ++number) {
     const auto f = split_csv(line);
     if (f.size() != 9)
-      throw std::runtime_error(fmt::format("{}:{}: {} columns, 9 expected", csv.string(), number, f.size()));
+      throw std::runtime_error(
+          fmt::format("{}:{}: {} columns, 9 expected", csv.string(), number, f.size()));
     ExactAtlasRow r;
     try {
       r.n = std::stoll(f[0]);
@@ -127,8 +132,8 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
   std::vector<std::string> order;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& row = rows[i];
-    if (!settings.n_values.empty() &&
-        std::find(settings.n_values.begin(), settings.n_values.end(), row.n()) == settings.n_values.end())
+    if (!settings.n_values.empty() && std::find(settings.n_values.begin(), settings.n_values.end(),
+                                                row.n()) == settings.n_values.end())
       continue;
     order.push_back(row.label);
     ++result.rows;
@@ -150,7 +155,8 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     const PackingRecord& row = rows[i];
     pipeline::ExactResult& r = found[i];
     try {
-      r = pipeline::exact_of_file((settings.atlas.parent_path() / row.file).string(), settings.exact);
+      r = pipeline::exact_of_file((settings.atlas.parent_path() / row.file).string(),
+                                  settings.exact);
     } catch (const std::exception& e) {
       r.n = static_cast<int>(row.n());
       r.reason = e.what();
@@ -163,20 +169,20 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
     if (r.configuration && r.configuration->proven) {
       std::ofstream cert(settings.out / "exact" / (r.label + ".gp"));
       const fs::path coordinates = settings.atlas.parent_path() / rows[i].file;
-      exact::write_certificate(
-          cert, {r.label, &r.input, &r.polynomial, &*r.configuration, r.optimality ? &*r.optimality : nullptr,
-                 r.given_tolerance,
-                 fs::relative(fs::weakly_canonical(coordinates), fs::weakly_canonical(settings.out / "exact")).generic_string()});
+      exact::write_certificate(cert, {r.label, &r.input, &r.polynomial, &*r.configuration,
+                                      r.optimality ? &*r.optimality : nullptr, r.given_tolerance,
+                                      fs::relative(fs::weakly_canonical(coordinates),
+                                                   fs::weakly_canonical(settings.out / "exact"))
+                                          .generic_string()});
       if (!cert) throw std::runtime_error("cannot write the certificate of " + r.label);
     }
     table << exact_csv_row(r) << "\n" << std::flush;
     if (!table) throw std::runtime_error("cannot append to " + csv.string());
     result.done.push_back(r);
     if (progress)
-      progress(counter.finished(fmt::format("{} (n = {}): {}{}", r.label, r.n, r.proof,
-                                            r.polynomial.found
-                                                ? fmt::format(", degree {}", r.polynomial.polynomial.degree())
-                                                : "")));
+      progress(counter.finished(fmt::format(
+          "{} (n = {}): {}{}", r.label, r.n, r.proof,
+          r.polynomial.found ? fmt::format(", degree {}", r.polynomial.polynomial.degree()) : "")));
   };
   result.cancelled = ThreadExecutor(settings.threads).run_items(items, cancel).cancelled;
   table.close();

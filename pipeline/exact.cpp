@@ -43,7 +43,8 @@ int decimals_of(const std::vector<std::array<std::string, 2>>& points) {
   for (const auto& p : points)
     for (const auto& c : p) {
       const auto dot = c.find('.');
-      fewest = std::min(fewest, dot == std::string::npos ? 0 : static_cast<int>(c.size() - dot - 1));
+      fewest =
+          std::min(fewest, dot == std::string::npos ? 0 : static_cast<int>(c.size() - dot - 1));
     }
   return fewest;
 }
@@ -60,7 +61,8 @@ std::string thirty_decimals(const std::string& text) {
 }  // namespace
 
 std::string coordinates_text(const ExactResult& result, const std::string& label) {
-  std::string out = "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
+  std::string out =
+      "# tripack packing, unit-triangle convention: vertices (0,0) (1,0) (1/2,sqrt3/2)\n";
   out += fmt::format("# n: {}\n# label: {}\n# d: {}\n", result.n, label,
                      result.d.empty() ? std::string("") : thirty_decimals(result.d));
   for (const auto& p : result.input.given) out += p[0] + " " + p[1] + "\n";
@@ -86,7 +88,8 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
                              const ExactSettings& settings) {
   if (settings.digits < 40) throw std::invalid_argument("exact: --digits must be at least 40");
   if (settings.digits > 20000)
-    throw std::invalid_argument("exact: --digits must be at most 20000 (LLL at 2D digits beyond that takes hours)");
+    throw std::invalid_argument(
+        "exact: --digits must be at most 20000 (LLL at 2D digits beyond that takes hours)");
   ExactResult result;
   const Analysis analysis = analyze_packing(packing, {});
   result.pattern = analysis.pattern;
@@ -98,8 +101,9 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     return result;
   }
   const auto start = Clock::now();
-  MultiprecisionPolish polish = polish_multiprecision(analysis.pattern.packing, analysis.pattern.bonds,
-                                                      analysis.pattern.rattlers, 2 * settings.digits);
+  MultiprecisionPolish polish =
+      polish_multiprecision(analysis.pattern.packing, analysis.pattern.bonds,
+                            analysis.pattern.rattlers, 2 * settings.digits);
   // Rattlers given to 27+ decimals stay where the file has them (below); others are centred in
   // their cages, a compass search whose cost grows with the digits (minutes at 2,000).
   const bool given_places = static_cast<int>(given.size()) == static_cast<int>(packing.size()) &&
@@ -125,16 +129,21 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     input.given = text.points;
     result.given_tolerance = "1e-25";
     // A rattler is free in its cage: it stays where the file has it (checked strictly apart).
-    for (int r : analysis.pattern.rattlers) input.points[static_cast<std::size_t>(r)] = text.points[static_cast<std::size_t>(r)];
+    for (int r : analysis.pattern.rattlers)
+      input.points[static_cast<std::size_t>(r)] = text.points[static_cast<std::size_t>(r)];
   } else {
-    for (const auto& p : polish.points) input.given.push_back({thirty_decimals(p[0]), thirty_decimals(p[1])});
+    for (const auto& p : polish.points)
+      input.given.push_back({thirty_decimals(p[0]), thirty_decimals(p[1])});
     result.given_tolerance = "1e-25";
-    given_note = "; the given points are the polish's, to 30 decimals (no coordinates with 27+ decimals given)";
+    given_note =
+        "; the given points are the polish's, to 30 decimals (no coordinates with 27+ decimals "
+        "given)";
   }
   // D, 2D, 4D, ... up to settings.digits; polish.d has 2 * settings.digits digits, and each
   // stage reads its first 2D of them.
   std::vector<int> ladder;
-  const int first = settings.first_digits > 0 ? std::min(settings.first_digits, settings.digits) : settings.digits;
+  const int first = settings.first_digits > 0 ? std::min(settings.first_digits, settings.digits)
+                                              : settings.digits;
   for (int D = first; D < settings.digits; D *= 2) ladder.push_back(D);
   ladder.push_back(settings.digits);
   for (int D : ladder) {
@@ -161,7 +170,8 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     }
     result.proof = "existence";
     const auto t3 = Clock::now();
-    result.optimality = exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
+    result.optimality =
+        exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
     result.seconds_existence += seconds_since(t3);
     if (result.optimality->proven) {
       result.proof = "exact";

@@ -17,7 +17,7 @@
 namespace tripack::pipeline {
 
 struct ExactSettings {
-  int digits = 300;       // D: the relation is found from D digits, confirmed from 2D
+  int digits = 300;  // D: the relation is found from D digits, confirmed from 2D
   // A row that fails at first_digits (0: digits) is tried again at twice as many, up to digits:
   // the polish is done once, to 2 * digits; P found at fewer digits is kept.
   int first_digits = 0;

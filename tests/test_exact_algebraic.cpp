@@ -58,8 +58,8 @@ TEST(ExactAlgebraic, FourDeltaClosedFormForKUpTo50) {
     ASSERT_TRUE(p.found) << "k = " << k << ": " << p.reason;
     const long lead = a * a - 3, middle = -2 * a, constant = 1;
     const long sign = lead < 0 ? -1 : 1;
-    const IntegerPolynomial expected{{std::to_string(sign * constant), std::to_string(sign * middle),
-                                      std::to_string(sign * lead)}};
+    const IntegerPolynomial expected{{std::to_string(sign * constant),
+                                      std::to_string(sign * middle), std::to_string(sign * lead)}};
     EXPECT_EQ(p.polynomial.pari(), expected.pari()) << "k = " << k;
   }
 }
