@@ -25,7 +25,7 @@ PKGS=(
   chromium             # headless browser: the test renders the explorer's index.html
   libflint-dev         # exact d(n): LLL integer relations, exact factorisation, rational polynomials
   libflint-arb-dev     # exact d(n): ball arithmetic for root isolation and the embedding checks
-  libfplll-dev         # exact d(n): the LLL of integer relations (~50x FLINT's at degree 64, 4,000 digits)
+  libfplll-dev         # exact d(n): the LLL of integer relations (5x FLINT's at degree 64, 4,000 digits)
   pari-gp              # the independent checker of exact certificates (checker/, shares no code)
 )
 missing=()
