@@ -27,8 +27,8 @@
 #include "jobs/exact_atlas.hpp"
 #include "jobs/explore.hpp"
 #include "jobs/import.hpp"
-#include "jobs/ranks.hpp"
-#include "jobs/search.hpp"
+#include "runner/ranks.hpp"
+#include "search/search.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
@@ -286,7 +286,7 @@ int cmd_billiards(const GlobalOptions& g, const BilliardsCommandOptions& o) {
 }
 
 int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
-  jobs::SearchRequest request;
+  search::SearchRequest request;
   request.n = o.n;
   request.seconds = o.seconds;
   request.steps = o.steps;
@@ -294,7 +294,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
   request.threads = o.threads;
   request.lattice_starts = o.lattice_starts;
   if (o.method == "restarts")
-    request.method = jobs::SearchMethod::Restarts;
+    request.method = search::SearchMethod::Restarts;
   else if (o.method != "basin-hopping")
     throw std::invalid_argument("--method must be basin-hopping or restarts, not '" + o.method +
                                 "'");
@@ -309,7 +309,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
   }
   report::ProgressLine progress(std::cerr, terminal_line(fmt::format("search n={}", o.n), o.out));
   request.progress = progress.callback();
-  const auto result = jobs::run_search(request);
+  const auto result = search::run_search(request);
   progress.finish();
   // Recorded before printing: what was found is kept even if printing fails.
   if (db)
@@ -317,7 +317,7 @@ int cmd_search(const GlobalOptions& g, const SearchOptions& o) {
       if (!db->record(jobs::run_record_of(result, c, "tripack " TRIPACK_VERSION)))
         std::cerr << fmt::format(
             "tripack: note: {} already holds n = {} seed = {} ({}); not recorded again\n", o.db,
-            o.n, result.chains[c].seed, jobs::search_method(result.request));
+            o.n, result.chains[c].seed, search::search_method(result.request));
   print_result(result, o.out);
   if (!result.packings.empty()) {
     const auto& best = result.packings.front();
@@ -559,7 +559,7 @@ int cmd_campaign(const GlobalOptions& g, const CampaignOptions& o) {
   request.tool_version = "tripack " TRIPACK_VERSION;
   // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a log
   // every recorded unit is one line (what a batch job, or the soak test, checks after a kill).
-  const std::unique_ptr<jobs::Executor> executor = jobs::executor_for_launch(o.threads);
+  const std::unique_ptr<Executor> executor = executor_for_launch(o.threads);
   std::optional<report::ProgressLine> progress;
   if (executor->rank() == 0) progress.emplace(std::cerr, job_line("campaign", 1, false));
   const auto result = jobs::run_campaign(request, *executor, g.cancel,

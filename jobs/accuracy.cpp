@@ -18,7 +18,7 @@
 #include "core/points.hpp"
 #include "core/timing.hpp"
 #include "jobs/billiards_search.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "polish/polish_mp.hpp"

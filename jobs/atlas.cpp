@@ -15,7 +15,7 @@
 #include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"

@@ -11,7 +11,7 @@
 #include "constructors/registry.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 
 namespace tripack::jobs {
 

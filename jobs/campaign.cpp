@@ -11,8 +11,9 @@
 #include "core/io.hpp"
 #include "core/precision.hpp"
 #include "core/timing.hpp"
-#include "jobs/ranks.hpp"
-#include "jobs/search.hpp"
+#include "runner/ranks.hpp"
+#include "jobs/stored.hpp"
+#include "search/search.hpp"
 #include "jobs/work_unit.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
@@ -21,8 +22,8 @@ namespace tripack::jobs {
 
 namespace {
 
-SearchRequest search_of(const CampaignRequest& request, long long n, std::uint64_t seed) {
-  SearchRequest search;
+search::SearchRequest search_of(const CampaignRequest& request, long long n, std::uint64_t seed) {
+  search::SearchRequest search;
   search.n = n;
   search.seed = seed;
   search.seconds = request.search_seconds.value_or(1);
@@ -31,14 +32,14 @@ SearchRequest search_of(const CampaignRequest& request, long long n, std::uint64
 
 // A search unit: one chain from random starts, recorded with its best certified packing.
 store::RunRecord search_unit(const CampaignRequest& request, const WorkUnit& unit) {
-  const SearchRequest search = search_of(request, unit.n, unit.seed);
+  const search::SearchRequest search = search_of(request, unit.n, unit.seed);
   try {
-    return run_record_of(run_search(search), 0, request.tool_version);
+    return run_record_of(search::run_search(search), 0, request.tool_version);
   } catch (const std::exception& e) {
     store::RunRecord record;
     record.n = unit.n;
     record.seed = unit.seed;
-    record.method = search_method(search);
+    record.method = search::search_method(search);
     record.tool_version = request.tool_version;
     record.outcome = std::string("error: ") + e.what();
     return record;
@@ -133,7 +134,7 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
   }
   std::vector<std::size_t> pending;
   const std::string method =
-      request.search_seconds ? search_method(search_of(request, 0, 0)) : store::RunRecord{}.method;
+      request.search_seconds ? search::search_method(search_of(request, 0, 0)) : store::RunRecord{}.method;
   for (std::size_t i = 0; i < units.size(); ++i)
     if (!db->has_run(units[i].n, units[i].seed, method)) pending.push_back(i);
   result.units = static_cast<long long>(units.size());

@@ -1,5 +1,5 @@
 // Campaigns (docs/campaigns.md): billiards runs over many n as work units (n, seed), run by the job
-// runner on threads or, when the program was started by mpirun, on MPI ranks (jobs/ranks.hpp), each
+// runner on threads or, when the program was started by mpirun, on MPI ranks (runner/ranks.hpp), each
 // finished unit recorded in the results database at once (store/), so rerunning the same request
 // skips every unit already recorded and an interrupted campaign loses at most the units under way.
 #pragma once
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/progress.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "sim/scene.hpp"
 #include "store/results_db.hpp"
 
@@ -23,7 +23,7 @@ struct CampaignRequest {
   int threads = 1;  // under mpirun: rank 0's own worker threads (0: it only hands out and writes)
   std::string db;   // the results database file
   std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
-  // Set: every unit is a search chain (jobs/search.hpp) of this many seconds from random starts
+  // Set: every unit is a search chain (search/search.hpp) of this many seconds from random starts
   // instead of one billiards run; its method is "search S s".
   std::optional<double> search_seconds;
   std::string tool_version;

@@ -13,7 +13,7 @@
 #include "core/timing.hpp"
 #include "exact/certificate.hpp"
 #include "jobs/atlas_files.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 
 namespace tripack::jobs {
 

@@ -11,8 +11,8 @@
 
 #include "core/conventions.hpp"
 #include "core/timing.hpp"
-#include "jobs/runner.hpp"
-#include "jobs/search.hpp"
+#include "runner/runner.hpp"
+#include "search/search.hpp"
 #include "pipeline/catalogue_checks.hpp"
 
 namespace tripack::jobs {
@@ -270,7 +270,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     if (cancel.cancelled()) break;
     const bool large = n > settings.billiards_max_n && n > settings.class_billiards_max_n;
     if (!large) {
-      SearchRequest search;
+      search::SearchRequest search;
       search.n = n;
       search.steps = settings.search_steps;
       search.seconds = 3600;  // the step budget decides; this only bounds a pathological step
@@ -283,7 +283,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       const std::string item = fmt::format("n = {}, {} steps", n, settings.search_steps);
       report("search", item);
       try {
-        const SearchResult found = run_search(search);
+        const search::SearchResult found = search::run_search(search);
         for (const auto& x : found.packings)
           result.packings.push_back(packing_of_search(x, found.seconds));
         compare_with_builders(result, n, found.packings);

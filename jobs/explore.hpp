@@ -1,7 +1,7 @@
 // The explorer (`tripack explore`, issue 9): every class member up to max_n built and certified,
 // billiards searches for small n, class members and the matrix stress set, the two compared, and
 // the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
-// report directory. Every stage runs on the job runner (jobs/runner.hpp) and stops between items
+// report directory. Every stage runs on the job runner (runner/runner.hpp) and stops between items
 // when `cancel` is set; the result says so.
 #pragma once
 
@@ -29,7 +29,7 @@ struct ExploreSettings {
   std::vector<long long> stress_set{254, 255, 256, 258, 260};  // matrix stress set, when <= max_n
   // A few large class members, built and certified (4Delta(22): n = 1012; Delta(40): n = 820).
   std::vector<BuildRequest> large_terms{{"four-delta", 22, 0, ""}, {"hexagonal", 40, 0, ""}};
-  // The search (jobs/search.hpp) per n up to billiards_max_n and class members <= 60: one chain
+  // The search (search/search.hpp) per n up to billiards_max_n and class members <= 60: one chain
   // per thread, each this many steps (a step budget, so the report does not depend on the
   // machine's speed). 100 steps on 2 threads from seed 1 reach the paper's best at every
   // n = 16..34 (docs/search.md).

@@ -9,7 +9,7 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "core/timing.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "store/results_db.hpp"

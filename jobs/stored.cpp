@@ -128,4 +128,31 @@ PruneResult prune_database(const std::string& path, long long keep, long long n_
   return result;
 }
 
+store::RunRecord run_record_of(const search::SearchResult& result, std::size_t chain,
+                               const std::string& tool_version) {
+  const search::SearchChain& c = result.chains.at(chain);
+  store::RunRecord run;
+  run.n = result.request.n;
+  run.seed = c.seed;
+  run.method = search::search_method(result.request);
+  run.events = c.steps;
+  run.seconds = c.seconds;
+  run.tool_version = tool_version;
+  run.outcome = c.best ? "certified" : "no certified packing";
+  if (c.best) run.packing = store::stored_of(*c.best, tool_version);
+  return run;
+}
+
+std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count) {
+  std::vector<Packing> starts;
+  for (const store::StoredPacking& stored : db.packings(n)) {
+    if (starts.size() == count) break;
+    Packing p;
+    p.d = std::stold(stored.d);
+    p.points = stored.points;
+    starts.push_back(std::move(p));
+  }
+  return starts;
+}
+
 }  // namespace tripack::jobs

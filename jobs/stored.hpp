@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/record.hpp"
+#include "search/search.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::jobs {
@@ -64,5 +65,12 @@ struct PruneResult {
 };
 PruneResult prune_database(const std::string& path, long long keep, long long n_first,
                            long long n_last);
+
+// A search chain as a campaign database unit (n, seed, method search::search_method): its best
+// certified packing; steps as events.
+store::RunRecord run_record_of(const search::SearchResult& result, std::size_t chain,
+                               const std::string& tool_version);
+// The best `count` stored packings of n as search starts (largest d first).
+std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count);
 
 }  // namespace tripack::jobs

@@ -12,6 +12,7 @@ namespace tripack::report {
 using nlohmann::json;
 using namespace pipeline;
 using namespace jobs;
+using namespace search;
 
 namespace {
 

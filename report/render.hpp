@@ -18,7 +18,7 @@
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/exact.hpp"
 #include "jobs/compare.hpp"
-#include "jobs/search.hpp"
+#include "search/search.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
 
@@ -68,9 +68,9 @@ void render_csv(std::ostream& out, const jobs::BilliardsSearchResult& r,
 
 // `tripack search`: the best packing (certified, seconds_to_best), the distinct packings by rank,
 // the chains.
-void render_text(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
-void render_json(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
-void render_csv(std::ostream& out, const jobs::SearchResult& r, const RenderOptions& o);
+void render_text(std::ostream& out, const search::SearchResult& r, const RenderOptions& o);
+void render_json(std::ostream& out, const search::SearchResult& r, const RenderOptions& o);
+void render_csv(std::ostream& out, const search::SearchResult& r, const RenderOptions& o);
 
 void render_text(std::ostream& out, const jobs::ConstructedVsBilliards& c,
                  const RenderOptions& o);

@@ -13,6 +13,7 @@ namespace tripack::report {
 
 using namespace pipeline;
 using namespace jobs;
+using namespace search;
 
 namespace {
 

@@ -83,7 +83,7 @@ struct AddOutcome {
 struct RunRecord {
   long long n = 0;
   std::uint64_t seed = 0;
-  std::string method = "billiards";  // or "search S s": a search chain (jobs/search.hpp)
+  std::string method = "billiards";  // or "search S s": a search chain (search/search.hpp)
   std::string outcome;               // "certified", "not certified", "error: ..."
   long long events = 0;
   double seconds = 0;

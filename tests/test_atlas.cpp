@@ -74,7 +74,7 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   request.runs = 6;
   request.threads = 2;
   request.db = (dir / "runs.db").string();
-  jobs::run_campaign(request, jobs::ThreadExecutor(request.threads), nullptr, {});
+  jobs::run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
   jobs::AtlasSettings settings;
   settings.n_first = 9;  // n = 9 has no run: its builder (Delta(4)-1) alone

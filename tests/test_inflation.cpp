@@ -7,7 +7,7 @@
 
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
-#include "jobs/search.hpp"
+#include "search/search.hpp"
 #include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
 
@@ -111,13 +111,13 @@ TEST(Inflation, RefusesAPackingOffTheLattice) {
 TEST(Search, ReachesTheInflationOfTheBaseSearch) {
   const long double target = atlas_packing("t150a").d;
   for (std::uint64_t seed : {1, 3}) {
-    jobs::SearchRequest r;
+    search::SearchRequest r;
     r.n = 150;
     r.steps = 40;
     r.seconds = 600;
     r.seed = seed;
     r.target = target;
-    const jobs::SearchResult result = jobs::run_search(r);
+    const search::SearchResult result = search::run_search(r);
     ASSERT_FALSE(result.packings.empty());
     EXPECT_TRUE(result.chains.at(0).target_reached) << seed;
     EXPECT_EQ(result.chains.at(0).base_n, 43);

@@ -1,4 +1,4 @@
-// The job runner (jobs/runner.hpp) on its own: every item once, cancelling, failing, the order
+// The job runner (runner/runner.hpp) on its own: every item once, cancelling, failing, the order
 // given; and the one progress renderer's text.
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "report/progress_line.hpp"
 
 namespace tripack::jobs {

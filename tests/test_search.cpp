@@ -1,4 +1,4 @@
-// The search (jobs/search.hpp, issue 21): reproducible on one thread with a step budget, reaches
+// The search (search/search.hpp, issue 21): reproducible on one thread with a step budget, reaches
 // proven optima, stops at a target, continues from given packings, records as campaign units.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -8,14 +8,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "jobs/search.hpp"
+#include "jobs/stored.hpp"
+#include "search/search.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack {
 namespace {
 
-jobs::SearchRequest request(long long n, long long steps, std::uint64_t seed) {
-  jobs::SearchRequest r;
+search::SearchRequest request(long long n, long long steps, std::uint64_t seed) {
+  search::SearchRequest r;
   r.n = n;
   r.steps = steps;
   r.seconds = 600;  // the step budget decides
@@ -25,11 +26,11 @@ jobs::SearchRequest request(long long n, long long steps, std::uint64_t seed) {
 
 // Two runs of one seed on one thread with a step budget: the same packings, digit for digit.
 TEST(Search, SameSeedOneThreadGivesTheSameResult) {
-  for (const auto method : {jobs::SearchMethod::BasinHopping, jobs::SearchMethod::Restarts}) {
-    jobs::SearchRequest r = request(23, 25, 11);
+  for (const auto method : {search::SearchMethod::BasinHopping, search::SearchMethod::Restarts}) {
+    search::SearchRequest r = request(23, 25, 11);
     r.method = method;
-    const jobs::SearchResult a = jobs::run_search(r);
-    const jobs::SearchResult b = jobs::run_search(r);
+    const search::SearchResult a = search::run_search(r);
+    const search::SearchResult b = search::run_search(r);
     ASSERT_FALSE(a.packings.empty());
     ASSERT_EQ(a.packings.size(), b.packings.size());
     for (std::size_t i = 0; i < a.packings.size(); ++i) {
@@ -45,9 +46,9 @@ TEST(Search, SameSeedOneThreadGivesTheSameResult) {
 // Delta(4) = 10 disks: the optimum is the hexagonal packing, d = 1/3 (Oler's bound is attained;
 // GL1995 sec. 1). Two chains on two threads both reach it, certified, and the best says when.
 TEST(Search, ReachesTheProvenOptimumOfTen) {
-  jobs::SearchRequest r = request(10, 20, 1);
+  search::SearchRequest r = request(10, 20, 1);
   r.threads = 2;
-  const jobs::SearchResult result = jobs::run_search(r);
+  const search::SearchResult result = search::run_search(r);
   ASSERT_FALSE(result.packings.empty());
   const PackingRecord& best = result.packings.front();
   EXPECT_TRUE(best.certified);
@@ -71,7 +72,7 @@ TEST(Search, ReachesTheProvenOptimumOfTen) {
 TEST(Search, ReachesTheClosedFormOfThirteen) {
   const double d13 = 3 / (6 + std::sqrt(6.0) + 2 * std::sqrt(3.0));
   for (std::uint64_t seed : {1, 2, 3}) {
-    const jobs::SearchResult result = jobs::run_search(request(13, 20, seed));
+    const search::SearchResult result = search::run_search(request(13, 20, seed));
     ASSERT_FALSE(result.packings.empty());
     EXPECT_TRUE(result.packings.front().certified);
     EXPECT_NEAR(static_cast<double>(result.packings.front().d.value()), d13, 1e-15) << seed;
@@ -80,10 +81,10 @@ TEST(Search, ReachesTheClosedFormOfThirteen) {
 
 // A target stops the chain at the step that reached it: the hexagonal 15 = Delta(5), d = 1/4.
 TEST(Search, StopsOnceTheTargetIsReached) {
-  jobs::SearchRequest r = request(15, 500, 3);
+  search::SearchRequest r = request(15, 500, 3);
   r.target = 0.25L;
-  const jobs::SearchResult result = jobs::run_search(r);
-  const jobs::SearchChain& chain = result.chains.at(0);
+  const search::SearchResult result = search::run_search(r);
+  const search::SearchChain& chain = result.chains.at(0);
   ASSERT_TRUE(chain.target_reached);
   EXPECT_LT(chain.steps, 500);
   EXPECT_NEAR(static_cast<double>(std::stold(chain.best_d)), 0.25, 1e-15);
@@ -98,25 +99,25 @@ TEST(Search, ContinuesFromTheGivenPackings) {
   for (int row = 0; row < 4; ++row)
     for (int i = 0; i < 4 - row; ++i)
       hexagonal.points.push_back({(i + row / 2.0L) / 3, row * std::sqrt(3.0L) / 6});
-  jobs::SearchRequest r = request(10, 1, 5);
+  search::SearchRequest r = request(10, 1, 5);
   r.starts = {hexagonal};
-  const jobs::SearchResult result = jobs::run_search(r);
+  const search::SearchResult result = search::run_search(r);
   ASSERT_FALSE(result.packings.empty());
   EXPECT_NEAR(static_cast<double>(result.packings.front().d.value()), 1.0 / 3.0, 1e-15);
-  EXPECT_EQ(jobs::search_method(r), "search 600 s, continued");
+  EXPECT_EQ(search::search_method(r), "search 600 s, continued");
 }
 
 TEST(Search, RefusesBadRequests) {
-  EXPECT_THROW(jobs::run_search(request(1, 5, 1)), std::invalid_argument);
-  jobs::SearchRequest r = request(10, 5, 1);
+  EXPECT_THROW(search::run_search(request(1, 5, 1)), std::invalid_argument);
+  search::SearchRequest r = request(10, 5, 1);
   r.threads = 0;
-  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+  EXPECT_THROW(search::run_search(r), std::invalid_argument);
   r = request(10, 5, 1);
   r.seconds = 0;
-  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+  EXPECT_THROW(search::run_search(r), std::invalid_argument);
   r = request(10, 5, 1);
   r.starts = {Packing{{{0, 0}, {1, 0}}, 1}};
-  EXPECT_THROW(jobs::run_search(r), std::invalid_argument);
+  EXPECT_THROW(search::run_search(r), std::invalid_argument);
 }
 
 // A chain as a database unit: (n, seed, "search S s") with its best packing; recorded once.
@@ -128,7 +129,7 @@ TEST(Search, AChainIsACampaignUnit) {
     for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
   };
   remove_all();
-  const jobs::SearchResult result = jobs::run_search(request(10, 4, 2));
+  const search::SearchResult result = search::run_search(request(10, 4, 2));
   const store::RunRecord run = jobs::run_record_of(result, 0, "test");
   EXPECT_EQ(run.method, "search 600 s");
   EXPECT_EQ(run.events, 4);

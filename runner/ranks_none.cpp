@@ -2,10 +2,10 @@
 // would otherwise run the whole campaign on the same database).
 #include <stdexcept>
 
-#include "jobs/ranks.hpp"
-#include "jobs/ranks_env.hpp"
+#include "runner/ranks.hpp"
+#include "runner/ranks_env.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 struct RankLink::State {};
 
@@ -37,4 +37,4 @@ std::optional<std::size_t> RankLink::report_and_wait(const std::string&) {
   return std::nullopt;
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack

@@ -8,10 +8,10 @@
 #include <thread>
 #include <vector>
 
-#include "jobs/dispenser.hpp"
-#include "jobs/ranks.hpp"
+#include "runner/dispenser.hpp"
+#include "runner/ranks.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 namespace {
 
@@ -72,4 +72,4 @@ std::unique_ptr<Executor> executor_for_launch(int threads) {
   return std::make_unique<ThreadExecutor>(threads);
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack

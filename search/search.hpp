@@ -23,9 +23,8 @@
 #include "core/packing.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
-#include "store/results_db.hpp"
 
-namespace tripack::jobs {
+namespace tripack::search {
 
 enum class SearchMethod {
   BasinHopping,  // the search
@@ -84,17 +83,11 @@ struct SearchResult {
   long long steps() const;
 };
 
-// A search chain as a campaign database unit (n, seed, method): method "search S s" (S the
-// budget), "search S s, continued" when it started from stored packings; its best certified
-// packing; steps as events.
+// The method a search chain is recorded under (jobs/stored.hpp): "search S s" (S the budget),
+// "search S s, continued" when it started from stored packings.
 std::string search_method(const SearchRequest& request);
-store::RunRecord run_record_of(const SearchResult& result, std::size_t chain,
-                               const std::string& tool_version);
-// The best `count` stored packings of n as search starts (largest d first).
-std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count);
-
 // Throws std::invalid_argument for n < 2, a budget that is not positive, threads < 1, or a start
 // that is not a packing of n disks.
 SearchResult run_search(const SearchRequest& request);
 
-}  // namespace tripack::jobs
+}  // namespace tripack::search

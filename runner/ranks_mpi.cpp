@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "jobs/ranks.hpp"
-#include "jobs/ranks_env.hpp"
+#include "runner/ranks.hpp"
+#include "runner/ranks_env.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 namespace {
 constexpr int kReport = 1, kItem = 2, kStop = 3;
@@ -83,4 +83,4 @@ std::optional<std::size_t> RankLink::report_and_wait(const std::string& result) 
   return static_cast<std::size_t>(message);
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace tripack::jobs {
+namespace tripack {
 
 inline int ranks_from_environment() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
@@ -19,4 +19,4 @@ inline int ranks_from_environment() {
   return 1;
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack

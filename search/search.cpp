@@ -1,4 +1,4 @@
-#include "jobs/search.hpp"
+#include "search/search.hpp"
 
 #include <fmt/format.h>
 
@@ -12,13 +12,13 @@
 
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 #include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
 
-namespace tripack::jobs {
+namespace tripack::search {
 
 std::string method_name(SearchMethod method) {
   return method == SearchMethod::Restarts ? "restarts" : "basin-hopping";
@@ -550,33 +550,6 @@ std::string search_method(const SearchRequest& request) {
                      request.starts.empty() ? "" : ", continued");
 }
 
-store::RunRecord run_record_of(const SearchResult& result, std::size_t chain,
-                               const std::string& tool_version) {
-  const SearchChain& c = result.chains.at(chain);
-  store::RunRecord run;
-  run.n = result.request.n;
-  run.seed = c.seed;
-  run.method = search_method(result.request);
-  run.events = c.steps;
-  run.seconds = c.seconds;
-  run.tool_version = tool_version;
-  run.outcome = c.best ? "certified" : "no certified packing";
-  if (c.best) run.packing = store::stored_of(*c.best, tool_version);
-  return run;
-}
-
-std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count) {
-  std::vector<Packing> starts;
-  for (const store::StoredPacking& stored : db.packings(n)) {
-    if (starts.size() == count) break;
-    Packing p;
-    p.d = std::stold(stored.d);
-    p.points = stored.points;
-    starts.push_back(std::move(p));
-  }
-  return starts;
-}
-
 SearchResult run_search(const SearchRequest& request) {
   check(request);
   SearchResult result;
@@ -628,4 +601,4 @@ SearchResult run_search(const SearchRequest& request) {
   return result;
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack::search

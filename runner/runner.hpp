@@ -1,7 +1,7 @@
 // The one way a long job runs its items: a cancellable pool that hands out item indices one at a
 // time to workers and gives every finished item back to the job on one thread at a time. Where
 // the workers are is the executor's business: threads of this process (ThreadExecutor) or other
-// MPI ranks plus threads of rank 0 (RankExecutor, jobs/ranks.hpp). The billiards search, a
+// MPI ranks plus threads of rank 0 (RankExecutor, runner/ranks.hpp). The billiards search, a
 // campaign, the atlas, the explorer, the accuracy study and an import all run through it.
 #pragma once
 
@@ -15,7 +15,7 @@
 #include "core/progress.hpp"
 #include "core/timing.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 struct JobItems {
   std::size_t count = 0;  // items 0 .. count - 1, unless `order` says which
@@ -75,4 +75,4 @@ class ProgressCounter {
   Clock::time_point start_ = Clock::now();
 };
 
-}  // namespace tripack::jobs
+}  // namespace tripack

@@ -1,10 +1,10 @@
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 
 #include <thread>
 
-#include "jobs/dispenser.hpp"
+#include "runner/dispenser.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 Dispenser::Dispenser(const JobItems& items, const CancelToken* cancel)
     : items_(items), cancel_(cancel), total_(items.order ? items.order->size() : items.count) {}
@@ -87,4 +87,4 @@ Progress ProgressCounter::finished(std::string item, long double d) {
   return p;
 }
 
-}  // namespace tripack::jobs
+}  // namespace tripack

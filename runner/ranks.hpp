@@ -1,4 +1,4 @@
-// The runner's MPI executor (jobs/runner.hpp) for an `mpirun -np P tripack campaign ...` launch
+// The runner's MPI executor (runner/runner.hpp) for an `mpirun -np P tripack campaign ...` launch
 // (OpenMPI; the only file that includes mpi.h is ranks_mpi.cpp, compiled when CMake finds MPI;
 // ranks_none.cpp stands in otherwise). Rank 0 hands out item indices one at a time and is the
 // only process that sees results (`finished`), so it alone writes the database; every other rank
@@ -11,9 +11,9 @@
 #include <optional>
 #include <string>
 
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 // The number of ranks mpirun started this process among (its environment:
 // OMPI_COMM_WORLD_SIZE, or PMI_SIZE under MPICH-style launchers); 1 when started alone.
@@ -67,4 +67,4 @@ class RankExecutor final : public Executor {
 // The executor of this launch: MPI ranks under mpirun (launched_ranks() > 1), else threads.
 std::unique_ptr<Executor> executor_for_launch(int threads);
 
-}  // namespace tripack::jobs
+}  // namespace tripack

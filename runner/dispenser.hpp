@@ -1,4 +1,4 @@
-// The runner's shared state (jobs/runner.hpp): the next item, the finished count, the first
+// The runner's shared state (runner/runner.hpp): the next item, the finished count, the first
 // failure. Both executors hand out items through it, so cancelling and failing behave the same
 // on threads and on MPI ranks.
 #pragma once
@@ -7,9 +7,9 @@
 #include <mutex>
 #include <optional>
 
-#include "jobs/runner.hpp"
+#include "runner/runner.hpp"
 
-namespace tripack::jobs {
+namespace tripack {
 
 class Dispenser {
  public:
@@ -32,4 +32,4 @@ class Dispenser {
   std::exception_ptr failure_;
 };
 
-}  // namespace tripack::jobs
+}  // namespace tripack
