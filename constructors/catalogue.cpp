@@ -1,4 +1,5 @@
 #include "constructors/catalogue.hpp"
+#include "core/data_directory.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -212,7 +213,7 @@ Catalogue Catalogue::load(const std::string& path) {
 
 std::string Catalogue::default_path() {
   if (const char* env = std::getenv("TRIPACK_CATALOGUE"); env && *env) return env;
-  return TRIPACK_DEFAULT_CATALOGUE;
+  return (data_directory() / "classes.yaml").string();
 }
 
 const ClassInfo& Catalogue::find(const std::string& id) const {

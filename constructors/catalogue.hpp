@@ -69,7 +69,7 @@ class Catalogue {
  public:
   static Catalogue load(const std::string& path);        // throws CatalogueError
   static Catalogue parse(const std::string& yaml_text);  // throws CatalogueError
-  static std::string default_path();  // $TRIPACK_CATALOGUE, else the source tree's classes.yaml
+  static std::string default_path();  // $TRIPACK_CATALOGUE, else the installed classes.yaml
 
   const std::vector<ClassInfo>& classes() const { return classes_; }
   const ClassInfo& find(const std::string& id) const;  // throws CatalogueError listing the ids

@@ -1,5 +1,8 @@
 #include "core/conventions.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include <cmath>
 
 #include "core/geometry.hpp"
@@ -11,6 +14,12 @@ std::optional<Convention> parse_convention(std::string_view name) {
   if (name == "radius") return Convention::Radius;
   if (name == "unit-disk-side") return Convention::UnitDiskSide;
   return std::nullopt;
+}
+
+Convention convention_from_option(std::string_view name) {
+  if (const auto c = parse_convention(name)) return *c;
+  throw std::invalid_argument("unknown convention '" + std::string(name) +
+                              "' (unit-triangle, radius, unit-disk-side)");
 }
 
 std::string_view convention_name(Convention c) {

@@ -15,6 +15,13 @@ namespace tripack {
 enum class Convention { UnitTriangle, Radius, UnitDiskSide };
 
 std::optional<Convention> parse_convention(std::string_view name);
+// As given to an option: throws std::invalid_argument "unknown convention 'X' (unit-triangle,
+// radius, unit-disk-side)" for any other name.
+Convention convention_from_option(std::string_view name);
+// The help of every --convention option.
+inline constexpr const char* kConventionHelp =
+    "unit-triangle (centres in the side-1 triangle), radius (circles of radius r in a side-1 "
+    "triangle) or unit-disk-side (unit circles in a triangle of side S)";
 std::string_view convention_name(Convention c);
 
 // d <-> r: r = d / (2 (1 + sqrt3 d)),  d = 2r / (1 - 2 sqrt3 r).

@@ -7,6 +7,8 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -15,17 +17,6 @@
 #include "core/conventions.hpp"
 
 namespace tripack {
-
-FileFormat format_from_path(const std::string& path) {
-  auto ends_with = [&](const char* ext) {
-    const std::string e(ext);
-    return path.size() >= e.size() && path.compare(path.size() - e.size(), e.size(), e) == 0;
-  };
-  if (ends_with(".csv")) return FileFormat::Csv;
-  if (ends_with(".json")) return FileFormat::Json;
-  if (ends_with(".pck") || ends_with(".records")) return FileFormat::Records;
-  return FileFormat::Text;
-}
 
 namespace {
 
@@ -213,27 +204,6 @@ void write_records(std::ostream& out, const RecordsTable& table) {
   out << "\n";
   for (std::size_t i = 0; i < table.points.size(); ++i)
     out << i << ' ' << table.points[i].first << ' ' << table.points[i].second << "\n";
-}
-
-void write_pattern(const std::string& path, const Pattern& pattern) {
-  std::ofstream out(path);
-  if (!out) throw InputError("cannot open '" + path + "' for writing");
-  switch (format_from_path(path)) {
-    case FileFormat::Text:
-      write_text(out, pattern);
-      break;
-    case FileFormat::Csv:
-      write_csv(out, pattern);
-      break;
-    case FileFormat::Json:
-      write_json(out, pattern);
-      break;
-    case FileFormat::Records:
-      // 17 digits: a double's round trip, the precision record tables are compared at.
-      write_records(out, records_table(pattern, 17));
-      break;
-  }
-  if (!out) throw InputError("failed writing '" + path + "'");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -635,27 +605,28 @@ PointsFile read_json(std::istream& in) {
 
 }  // namespace
 
-PointsFile read_points(std::istream& in, FileFormat format) {
-  switch (format) {
-    case FileFormat::Text:
-      return read_text(in, false);
-    case FileFormat::Records:
-      return read_text(in, true);
-    case FileFormat::Csv:
-      return read_csv(in);
-    case FileFormat::Json:
-      return read_json(in);
-  }
-  return {};
+PointsFile read_text_points(std::istream& in) {
+  return read_text(in, false);
+}
+PointsFile read_records_points(std::istream& in) {
+  return read_text(in, true);
+}
+PointsFile read_csv_points(std::istream& in) {
+  return read_csv(in);
+}
+PointsFile read_json_points(std::istream& in) {
+  return read_json(in);
 }
 
-PointsFile read_points_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot read '" + path + "'");
-  try {
-    return read_points(in, format_from_path(path));
-  } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
+void write_whole_file(const std::filesystem::path& path, const std::string& bytes) {
+  errno = 0;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  out.close();
+  if (!out) {
+    const int why = errno;
+    throw std::runtime_error("cannot write " + path.string() + ": " +
+                             (why ? std::strerror(why) : "write failed"));
   }
 }
 

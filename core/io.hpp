@@ -1,9 +1,11 @@
-// Reading and writing packings: "x y" text, the record tables' "i x y", CSV and JSON.
+// The layouts of packing files, read and written: "x y" text, the record tables' "i x y", CSV and
+// JSON. Which file is which (names, extensions) is the format table's (formats/formats.hpp).
 // Coordinates are written with 21 significant digits (round-trip exact for long double) in text
 // and CSV; JSON numbers are doubles (17 digits), so JSON also carries them as strings.
 #pragma once
 
 #include <array>
+#include <filesystem>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -16,13 +18,6 @@
 #include "core/precision.hpp"
 
 namespace tripack {
-
-// Records: "i x y" lines with a "#" header (the record tables' layout, docs/formats.md).
-enum class FileFormat { Text, Csv, Json, Records };
-
-// Chosen by extension: .csv -> CSV, .json -> JSON, .pck and .records -> records, anything else
-// -> text.
-FileFormat format_from_path(const std::string& path);
 
 // Thrown on unreadable or malformed input; the message is one line naming the place.
 struct InputError : std::runtime_error {
@@ -82,9 +77,6 @@ RecordsTable records_table(const Pattern& pattern, int digits,
 // "# layout: i x y"), then one "i x y" line per disk, i 0-based.
 void write_records(std::ostream& out, const RecordsTable& table);
 
-// By extension; records are written with 17 significant digits.
-void write_pattern(const std::string& path, const Pattern& pattern);
-
 // What a points file holds. No validation beyond syntax and finiteness: geometry belongs to
 // packing_from_points (core/points.hpp).
 struct PointsFile {
@@ -114,9 +106,15 @@ struct PointsFile {
 // Text and CSV comment lines "# d: ..." and "# convention: NAME ..." (JSON: "d", "convention")
 // fill declared_d and declared_convention.
 // Errors are InputError, one line naming the file line (JSON: the point's position).
-PointsFile read_points(std::istream& in, FileFormat format);
-// As above, the format from the extension; errors are prefixed with the path.
-PointsFile read_points_file(const std::string& path);
+// The readers of the format table (formats/formats.hpp), which chooses one by extension.
+PointsFile read_text_points(std::istream& in);
+PointsFile read_records_points(std::istream& in);  // text whose 3 columns are "i x y"
+PointsFile read_csv_points(std::istream& in);
+PointsFile read_json_points(std::istream& in);
+
+// Writes `bytes` to `path` whole (replacing it); throws std::runtime_error "cannot write PATH:
+// reason" on failure.
+void write_whole_file(const std::filesystem::path& path, const std::string& bytes);
 
 // A CSV field as is, or quoted (with doubled quotes) when it holds a comma, quote or line break
 // (RFC 4180), so plain names stay plain.

@@ -9,16 +9,24 @@
 #include <sstream>
 #include <string>
 
+#include <vector>
+
 #include "core/io.hpp"
 #include "core/points.hpp"
+#include "formats/formats.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace tripack;
   if (size < 1) return 0;
   const std::uint8_t sel = data[0];
-  static const FileFormat formats[] = {FileFormat::Text, FileFormat::Csv, FileFormat::Json,
-                                       FileFormat::Records};
-  const FileFormat format = formats[sel & 3];
+  // The readable formats of the table (txt, csv, json, records), in its order.
+  static const auto readers = [] {
+    std::vector<PointsFile (*)(std::istream&)> r;
+    for (const auto& f : packing_formats())
+      if (f.read) r.push_back(f.read);
+    return r;
+  }();
+  const auto read = readers[(sel & 3) % readers.size()];
   std::optional<Convention> convention;
   switch ((sel >> 2) & 3) {
     case 1:
@@ -36,7 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::istringstream in(std::string(reinterpret_cast<const char*>(data + 1), size - 1));
   PointsFile file;
   try {
-    file = read_points(in, format);
+    file = read(in);
   } catch (const std::exception&) {
     return 0;
   }

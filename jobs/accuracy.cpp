@@ -1,3 +1,5 @@
+#include "formats/formats.hpp"
+#include "core/data_directory.hpp"
 #include "jobs/accuracy.hpp"
 
 #include <fmt/format.h>
@@ -365,12 +367,12 @@ std::vector<Gap> cage_gaps(const pipeline::Analysis& a) {
 }
 
 Packing read_hard_case(const std::string& dir, const std::string& name) {
-  return packing_from_points(read_points_file(dir + "/" + name), std::nullopt, std::nullopt)
+  return packing_from_points(read_packing_file(dir + "/" + name), std::nullopt, std::nullopt)
       .packing;
 }
 
 std::string hard_case_dir(const AccuracySettings& settings) {
-  return settings.hard_case_dir.empty() ? std::string(TRIPACK_HARD_CASES_DIR)
+  return settings.hard_case_dir.empty() ? (data_directory() / "hard").string()
                                         : settings.hard_case_dir;
 }
 

@@ -48,7 +48,8 @@ struct AccuracySettings {
   std::vector<long long> n{22, 79, 254, 500};
   std::uint64_t seed = 1;  // of every billiards run (one trajectory per n, stopped at each gap)
   bool hard_cases = true;
-  // The hard cases' coordinate files (t18a.txt, ...); empty: the source tree's tests/data/hard.
+  // The hard cases' coordinate files (t18a.txt, ...); empty: the installed data's hard/
+  // (core/data_directory.hpp).
   std::string hard_case_dir;
 };
 

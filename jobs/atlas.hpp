@@ -4,10 +4,16 @@
 // and one coordinates file per row, written by report/atlas_report.hpp) that anyone can check.
 #pragma once
 
+#include <tuple>
+
+#include <algorithm>
+
 #include <array>
 #include <string>
 #include <vector>
 
+#include "core/option_values.hpp"
+#include "core/options.hpp"
 #include "constructors/catalogue.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
@@ -23,6 +29,24 @@ struct AtlasSettings {
   int ranked_count = 20;
   int digits = 30;  // MPFR polish of d and the coordinates
   int threads = 2;
+
+  void declare(OptionList& o) {
+    o.parsed(
+        "--n",
+        [this](const std::string& s) {
+          n_values = parse_range_list(s, "--n");
+          n_first = *std::min_element(n_values.begin(), n_values.end());
+          n_last = *std::max_element(n_values.begin(), n_values.end());
+        },
+        "2..200", "A..B, N, or a list of them: 254,255,256");
+    o.parsed(
+        "--ranked",
+        [this](const std::string& s) { std::tie(ranked_first, ranked_last) = parse_range(s, "--ranked"); },
+        "16..34", "these n keep --ranked-count packings");
+    o.option("--ranked-count", ranked_count, "packings kept for --ranked n").range(1, 1000);
+    o.option("--digits", digits, "significant digits of d and the coordinates").range(19, 1000);
+    o.option("--threads", threads, "parallel values of n").range(1, 256);
+  }
 };
 
 // The atlas's rows are packing records (core/record.hpp): d and L to `digits` (MPFR), the

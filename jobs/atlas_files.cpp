@@ -1,3 +1,4 @@
+#include "formats/formats.hpp"
 #include "jobs/atlas_files.hpp"
 
 #include <fmt/format.h>
@@ -195,7 +196,7 @@ std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
     row.sources.push_back({PackingSource::Kind::Table, f[10], 0, confirmations});
     row.file = f[11];
     // The coordinates file gives the pattern (its points and d; bonds come with load_atlas).
-    const PointsFile points = read_points_file((csv.parent_path() / row.file).string());
+    const PointsFile points = read_packing_file((csv.parent_path() / row.file).string());
     if (static_cast<long long>(points.points.size()) != n)
       throw std::runtime_error(fmt::format("{}:{}: {} has {} points, the row says n = {}",
                                            csv.string(), number, row.file, points.points.size(),

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "constructors/catalogue.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
@@ -29,6 +30,13 @@ struct BilliardsSearch {
   ProgressFn progress;
   // When set, no new run starts (runs under way finish); the result holds the runs done.
   const CancelToken* cancel = nullptr;
+
+  // The runs (the scene comes from N or --scene: the commands' BilliardsScene).
+  void declare(OptionList& o) {
+    o.option("--runs", runs, "number of runs").range(1, 1000000);
+    o.option("--seed", seed, "seed of run 0 (run r uses seed + r)");
+    o.option("--threads", threads, "parallel runs").range(1, 256);
+  }
 };
 
 struct RunOutcome {
@@ -44,6 +52,7 @@ struct BilliardsSearchResult {
   Scene scene;
   int runs_asked = 0;
   std::vector<RunOutcome> runs;           // in seed order
+  bool cancelled() const { return runs.size() < static_cast<std::size_t>(runs_asked); }
   // The distinct packings the runs ended in (core/record.hpp: one per packing, each with its
   // billiards source: first seed and runs), ranked and labelled, best first.
   std::vector<PackingRecord> packings;

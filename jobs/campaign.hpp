@@ -4,11 +4,15 @@
 // skips every unit already recorded and an interrupted campaign loses at most the units under way.
 #pragma once
 
+#include <tuple>
+
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/option_values.hpp"
+#include "core/options.hpp"
 #include "core/progress.hpp"
 #include "runner/runner.hpp"
 #include "sim/scene.hpp"
@@ -21,12 +25,34 @@ struct CampaignRequest {
   int runs = 20;                      // seeds seed .. seed + runs - 1 for each n
   std::uint64_t seed = 1;
   int threads = 1;  // under mpirun: rank 0's own worker threads (0: it only hands out and writes)
-  std::string db;   // the results database file
+  std::string db = "tripack.db";  // the results database file
   std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
   // Set: every unit is a search chain (search/search.hpp) of this many seconds from random starts
   // instead of one billiards run; its method is "search S s".
   std::optional<double> search_seconds;
   std::string tool_version;
+
+  void declare(OptionList& o) {
+    o.parsed(
+        "--n", [this](const std::string& s) { std::tie(n_first, n_last) = parse_range(s, "--n"); },
+        "", "A..B or N")
+        .required();
+    o.option("--runs", runs, "seeds per n").range(1, 1000000);
+    o.option("--seed", seed, "first seed");
+    o.option("--threads", threads,
+             "parallel units; under mpirun, rank 0's own (0: it only hands out)")
+        .range(0, 256);
+    o.option("--db", db, "results database");
+    o.parsed(
+        "--scene", [this](const std::string& s) { scene = load_scene(s); }, "the default scene",
+        "scene YAML (effects, stop rule) for every n");
+    o.parsed(
+        "--search-seconds",
+        [this](const std::string& s) { search_seconds = positive_decimal(s, "--search-seconds"); },
+        "none",
+        "every unit is a search chain of this many seconds from random starts (method 'search S "
+        "s'), not one billiards run");
+  }
 };
 
 struct CampaignResult {

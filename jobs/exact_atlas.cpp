@@ -12,6 +12,7 @@
 #include "core/io.hpp"
 #include "core/timing.hpp"
 #include "exact/certificate.hpp"
+#include "pipeline/build.hpp"
 #include "jobs/atlas_files.hpp"
 #include "runner/runner.hpp"
 
@@ -189,6 +190,62 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
   sort_table(csv, order, header);
   result.seconds = seconds_since(start);
   return result;
+}
+
+pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& request) {
+  if (request.files.empty() == request.class_id.empty())
+    throw std::invalid_argument("exact needs packing files or --class C --k A..B, not both");
+  fs::path dir;
+  if (!request.certificates.empty()) {
+    dir = request.certificates;
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+      throw std::runtime_error("cannot write to directory '" + request.certificates + "'");
+  }
+  // Class members as built (polished, not certified: exact_of_packing analyses them itself).
+  std::vector<std::pair<std::string, Packing>> members;
+  if (!request.class_id.empty()) {
+    if (request.k.second < request.k.first)
+      throw std::invalid_argument("exact --class needs --k A..B");
+    pipeline::BuildSettings build;
+    build.certify = false;
+    for (long long k = request.k.first; k <= request.k.second; ++k) {
+      const auto built = pipeline::build_and_certify(
+          catalogue, {request.class_id, static_cast<long>(k), request.p, ""}, build);
+      members.emplace_back(pipeline::member_name(built.pattern.provenance),
+                           built.record.pattern.packing);
+    }
+  }
+  pipeline::ExactRun run;
+  const bool from_files = !request.files.empty();
+  const std::size_t count = from_files ? request.files.size() : members.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    run.packings.push_back(
+        from_files ? pipeline::exact_of_file(request.files[i], request.exact)
+                   : pipeline::exact_of_packing(members[i].second, members[i].first, {},
+                                                request.exact));
+    const auto& r = run.packings.back();
+    if (dir.empty() || !r.configuration || !r.configuration->proven) continue;
+    // A class member's name ("four-delta k=3") as a label the checker accepts: "four-delta_k3".
+    std::string label;
+    for (char ch : r.label)
+      if (ch != '=') label += ch == ' ' ? '_' : ch;
+    std::string coordinates;
+    if (from_files) {
+      coordinates = fs::relative(fs::weakly_canonical(request.files[i]), fs::weakly_canonical(dir))
+                        .generic_string();
+    } else {
+      coordinates = label + ".txt";
+      write_whole_file(dir / coordinates, pipeline::coordinates_text(r, label));
+    }
+    std::ostringstream text;
+    exact::write_certificate(
+        text, {label, &r.input, &r.polynomial, &*r.configuration,
+               r.optimality ? &*r.optimality : nullptr, r.given_tolerance, coordinates});
+    write_whole_file(dir / (label + ".gp"), text.str());
+  }
+  return run;
 }
 
 }  // namespace tripack::jobs

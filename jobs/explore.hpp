@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
 #include "jobs/accuracy.hpp"
@@ -38,6 +39,18 @@ struct ExploreSettings {
   int threads = 2;
   std::uint64_t seed = 1;
   bool accuracy = true;  // the accuracy-against-time study and the hard cases (docs/accuracy.md)
+
+  void declare(OptionList& o) {
+    o.option("--max-n", max_n, "class members up to this n").range(2, 100000);
+    o.option("--discovered-max-n", discovered_max_n,
+             "members of the discovered classes (vacancy segments) up to this n")
+        .range(2, 100000);
+    o.option("--search-steps", search_steps, "basin-hopping steps per chain for each n <= 60")
+        .range(1, 1e8);
+    o.option("--threads", threads, "parallel runs").range(1, 256);
+    o.option("--seed", seed, "seed of run 0 (run r uses seed + r)");
+    o.flag("!--no-accuracy", accuracy, "skip the accuracy-against-time study (~20 s)");
+  }
 };
 
 // One row of compare.csv.

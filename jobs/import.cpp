@@ -1,3 +1,4 @@
+#include "formats/formats.hpp"
 #include "jobs/import.hpp"
 
 #include <fmt/format.h>
@@ -27,7 +28,7 @@ ImportedPacking analyse_file(const ImportRequest& request, const std::string& pa
   out.source = std::filesystem::path(path).filename().string();
   PointsReading reading;
   try {
-    PointsFile file = read_points_file(path);  // its errors name the file already
+    PointsFile file = read_packing_file(path);  // its errors name the file already
     out.layout = file.layout;
     try {
       reading = packing_from_points(std::move(file), request.convention, std::nullopt);

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "core/conventions.hpp"
 #include "core/progress.hpp"
 
@@ -31,12 +32,21 @@ inline constexpr long double kOverlapTolerance = 1e-9L;
 
 struct ImportRequest {
   std::vector<std::string> files;
-  std::string db;                        // created if missing
+  std::string db = "tripack.db";         // created if missing
   std::optional<Convention> convention;  // none: as each file declares (analyze's rule)
   std::string tool_version;
-  int threads = 1;                      // files analysed at once (the job runner's threads)
+  int threads = 2;                      // files analysed at once (the job runner's threads)
   const CancelToken* cancel = nullptr;  // stops before the store: nothing is stored
   ProgressFn progress;                  // stage "import": one report per analysed file
+
+  void declare(OptionList& o) {
+    o.option("FILE", files, "packing files (any layout of 'analyze')").required();
+    o.option("--db", db, "results database, created if missing");
+    o.parsed(
+        "--convention", [this](const std::string& s) { convention = convention_from_option(s); },
+        "as the file declares, else unit-triangle", kConventionHelp);
+    o.option("--threads", threads, "files analysed at once").range(1, 256);
+  }
 };
 
 struct ImportedPacking {

@@ -5,8 +5,13 @@
 #include <chrono>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <sstream>
+#include <ostream>
+#include <algorithm>
 #include <stdexcept>
 
+#include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
 
@@ -153,6 +158,79 @@ std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std:
     starts.push_back(std::move(p));
   }
   return starts;
+}
+
+RecordedSearch search_and_record(search::SearchRequest request, const std::string& db,
+                                 const std::string& tool_version) {
+  std::optional<store::ResultsDb> store;
+  if (!db.empty()) {
+    store.emplace(store::ResultsDb::open(db));
+    request.starts = stored_starts(*store, request.n, 3);
+  }
+  RecordedSearch recorded;
+  recorded.search = search::run_search(request);
+  const auto& result = recorded.search;
+  if (store)
+    for (std::size_t c = 0; c < result.chains.size(); ++c)
+      if (!store->record(run_record_of(result, c, tool_version)))
+        recorded.notes.push_back(fmt::format(
+            "{} already holds n = {} seed = {} ({}); not recorded again", db, request.n,
+            result.chains[c].seed, search::search_method(result.request)));
+  return recorded;
+}
+
+void export_packings(const DbExport& o, std::ostream& out) {
+  if (o.all && o.rank != 1) throw std::invalid_argument("--rank and --all exclude each other");
+  const PackingFormat* format = o.format.empty() ? nullptr : &format_named(o.format, "--format");
+  const Convention convention = convention_from_option(o.convention);
+  const bool into_directory =
+      !o.output.empty() && (o.all || std::filesystem::is_directory(o.output));
+  if (!o.output.empty() && !into_directory) {
+    const PackingFormat* named = format_of_extension(o.output);
+    if (format && named && format != named)
+      throw std::invalid_argument("-o " + o.output + " names another format than --format " +
+                                  o.format);
+    if (!format) format = named;
+  }
+  const PackingFormat& chosen = format ? *format : packing_formats().front();
+  const auto selected = select_packings(o.db, o.n, o.rank, o.all);
+  auto write_options = [&](const PackingRecord& r) {
+    WriteOptions w;
+    w.convention = convention;
+    w.digits = o.digits;
+    w.d_digits = std::min(o.digits, kLongDoubleDigits);  // the digits the database keeps of d
+    w.label = r.label;
+    return w;
+  };
+  if (o.output.empty()) {
+    // Rendered whole before printing. Several packings follow one another (JSON: an array).
+    std::ostringstream buffer;
+    const bool array = chosen.name == "json" && selected.size() > 1;
+    if (array) buffer << "[\n";
+    for (std::size_t i = 0; i < selected.size(); ++i) {
+      if (i > 0) buffer << (array ? ",\n" : "\n");
+      chosen.write(buffer, selected[i], write_options(selected[i]));
+    }
+    if (array) buffer << "]\n";
+    out << buffer.str() << std::flush;
+    return;
+  }
+  std::filesystem::path dir;
+  if (into_directory) {
+    dir = o.output;
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+      throw std::runtime_error("cannot write to directory '" + o.output + "'");
+  }
+  for (const auto& r : selected) {
+    const std::filesystem::path path = into_directory ? dir / (r.label + chosen.extensions.front())
+                                                      : std::filesystem::path(o.output);
+    std::ostringstream bytes;
+    chosen.write(bytes, r, write_options(r));
+    write_whole_file(path, bytes.str());
+    out << path.string() << "\n";
+  }
 }
 
 }  // namespace tripack::jobs

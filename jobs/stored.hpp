@@ -6,10 +6,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "core/record.hpp"
+#include "formats/formats.hpp"
 #include "search/search.hpp"
 #include "store/results_db.hpp"
 
@@ -70,6 +73,49 @@ PruneResult prune_database(const std::string& path, long long keep, long long n_
 // certified packing; steps as events.
 store::RunRecord run_record_of(const search::SearchResult& result, std::size_t chain,
                                const std::string& tool_version);
+// `tripack db export`: stored packings of n as coordinate files (best first: rank 1 is tNa).
+struct DbExport {
+  std::string db = "tripack.db";
+  long long n = 0;
+  std::string format;  // a format table name; empty: -o FILE's extension, else txt
+  std::string convention = "unit-triangle";
+  long long rank = 1;  // 1 = the best
+  bool all = false;
+  std::string output;  // a file (one packing) or a directory (--all, or an existing directory)
+  int digits = 21;     // of the coordinates; d, L, r, S get at most the 18 stored
+
+  void declare(OptionList& o) {
+    o.option("N", n, "number of disks").required().range(2, 1e8);
+    o.option("--db", db, "results database");
+    o.option("--format", format,
+             "one of " + format_names() + " (records: i x y with d, r, S in the header); "
+             "default: -o's extension, else txt");
+    o.option("--convention", convention, kConventionHelp);
+    o.option("--rank", rank, "which packing: 1 = the best").range(1, 1e9);
+    o.flag("--all", all, "every stored packing of N (not with --rank)");
+    o.option("-o,--output", output,
+             "a file (one packing) or a directory (--all: one file per packing, named by its "
+             "label); default: stdout");
+    o.option("--digits", digits,
+             "significant digits of the coordinates (the database keeps 21; d keeps 18)")
+        .range(1, 21);
+  }
+};
+// Everything the request decides is checked before the database is read. Without -o the
+// packings go to `out` (several: one after another; JSON: an array); with -o, each file's path
+// goes to `out`.
+void export_packings(const DbExport& request, std::ostream& out);
+
+// `tripack search --db FILE`: the database (opened, or created, before any work) gives its best
+// packings of n as starts, and every chain is recorded as a unit before the result is returned.
+// Without a database: the search alone. `notes`: chains already recorded (not recorded again).
+struct RecordedSearch {
+  search::SearchResult search;
+  std::vector<std::string> notes;
+};
+RecordedSearch search_and_record(search::SearchRequest request, const std::string& db,
+                                 const std::string& tool_version);
+
 // The best `count` stored packings of n as search starts (largest d first).
 std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count);
 

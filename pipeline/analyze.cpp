@@ -1,3 +1,4 @@
+#include "formats/formats.hpp"
 #include "pipeline/analyze.hpp"
 
 #include <fmt/format.h>
@@ -275,10 +276,11 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   result.file = request.file;
   result.digits = request.digits;
   const auto start = Clock::now();
-  PointsFile file = read_points_file(request.file);
+  PointsFile file = read_packing_file(request.file);
   result.layout = file.layout;
   PointsReading reading =
-      packing_from_points(std::move(file), request.convention, request.expected_n);
+      packing_from_points(std::move(file), request.convention,
+                          request.expected_n ? std::optional<long long>(request.expected_n) : std::nullopt);
   // As read: the file's declared convention, radius for an x y r file.
   result.convention = reading.convention;
   result.warnings = std::move(reading.warnings);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
 #include "analysis/interior_relax.hpp"
@@ -80,9 +81,23 @@ struct AnalyzeRequest {
   std::string file;
   std::optional<Convention> convention;  // none: unit-triangle, or radius for an x y r file
   int digits = 15;
-  std::optional<long long> expected_n;
+  long long expected_n = 0;  // 0: any
   bool lp_any_size = false;  // lp_limit lifted
   ProgressFn progress;
+
+  void declare(OptionList& o) {
+    o.option("file", file, "the points file").required();
+    o.parsed(
+        "--convention", [this](const std::string& s) { convention = convention_from_option(s); },
+        "unit-triangle, or radius for an x y r file", kConventionHelp);
+    o.option("--digits", digits, "significant digits of d, r, S (above 18: MPFR polish)")
+        .range(1, 100000);
+    o.option("--n", expected_n, "expected number of points (0: any)").range(0, 100000000);
+    o.flag("--lp-any-size", lp_any_size,
+           "run the LP relax and certificates however large n is (above 3000 disks they can "
+           "take hours; by default a state the LP-free path cannot certify is then reported "
+           "not certified)");
+  }
 };
 struct FileAnalysis {
   std::string file;

@@ -9,6 +9,7 @@
 #include "analysis/exact_check.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
+#include "core/options.hpp"
 #include "pipeline/analyze.hpp"
 #include "polish/polish.hpp"
 #include "polish/polish_mp.hpp"
@@ -20,6 +21,13 @@ struct BuildSettings {
   bool polish = true;   // Newton on the builder's bond system
   bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
   ProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
+
+  void declare(OptionList& o) {
+    o.option("--digits", digits, "significant digits of d (above 18: MPFR polish)")
+        .range(1, 100000);
+    o.flag("!--no-polish", polish, "skip the Newton polish of the bond system");
+    o.flag("!--no-certify", certify, "skip relax/bonds/rigidity/stress from the geometry");
+  }
 };
 
 // Above this many disks certification is skipped (reported as skipped). With the fast certificate

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/options.hpp"
 #include "exact/algebraic.hpp"
 #include "exact/configuration.hpp"
 #include "exact/optimality.hpp"
@@ -23,6 +24,16 @@ struct ExactSettings {
   int first_digits = 0;
   int max_degree = 48;    // of P
   bool existence = true;  // also prove statements (I) and (II)
+
+  void declare(OptionList& o) {
+    o.option("--digits", digits, "D: digits the relation is found from").range(40, 20000);
+    o.option("--first-digits", first_digits,
+             "try D = this, twice this, ... up to --digits until the row is proven (0: --digits "
+             "only)")
+        .range(40, 20000);
+    o.option("--max-degree", max_degree, "largest degree of P tried").range(1, 200);
+    o.flag("!--no-existence", existence, "only the polynomial, no proof of statement (I)");
+  }
 };
 
 struct ExactResult {

@@ -306,16 +306,6 @@ void draw(cairo_t* cr, const Diagram& diagram, const DiagramOptions& options, co
   cairo_show_text(cr, caption.c_str());
 }
 
-void write_file(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out)
-    throw std::runtime_error("diagram: cannot open '" + path +
-                             "' for writing: " + std::strerror(errno));
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw std::runtime_error("diagram: failed writing '" + path + "'");
-}
-
 }  // namespace
 
 Vec2 diagram_position(long double d, const Vec2L& point, const DiagramOptions& options) {
@@ -360,7 +350,7 @@ void draw_packing(const Diagram& diagram, const std::string& path, const Diagram
     check(cairo_surface_write_to_png_stream(surface.get(), append, &bytes), "PNG encoding failed");
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "cannot finish the surface");
-  write_file(path, format == Format::Svg ? renumber_svg_surfaces(bytes) : bytes);
+  write_whole_file(path, format == Format::Svg ? renumber_svg_surfaces(bytes) : bytes);
 }
 
 }  // namespace tripack::report

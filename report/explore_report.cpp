@@ -1,3 +1,4 @@
+#include "formats/formats.hpp"
 #include "report/explore_report.hpp"
 
 #include <fmt/format.h>
@@ -453,12 +454,12 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
   if (!ec) fs::create_directories(dir / "diagrams", ec);
   if (ec) throw std::runtime_error("cannot write to directory '" + dir.string() + "'");
   say("data: packings.csv, packings.json, compare.csv, classes.csv, coordinates");
-  write_file(dir / "packings.csv", packings_csv(result));
-  write_file(dir / "packings.json", packings_json(result));
-  write_file(dir / "compare.csv", compare_csv(result));
-  write_file(dir / "classes.csv", classes_csv(result));
+  write_whole_file(dir / "packings.csv", packings_csv(result));
+  write_whole_file(dir / "packings.json", packings_json(result));
+  write_whole_file(dir / "compare.csv", compare_csv(result));
+  write_whole_file(dir / "classes.csv", classes_csv(result));
   for (const auto& r : result.packings)
-    write_pattern((dir / packing_file_name(r)).string(), r.pattern);
+    write_packing_file((dir / packing_file_name(r)).string(), r, WriteOptions{});
   if (options.diagrams) {
     say(fmt::format("diagrams: {} packings", result.packings.size()));
     for (const auto& r : result.packings) {
@@ -505,10 +506,10 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
     say("accuracy: accuracy.csv, accuracy.svg, accuracy.png, accuracy.pdf");
     const auto points = accuracy_points(*result.accuracy);
     if (!points.empty()) plot_accuracy(points, dir, "accuracy-plot");
-    write_file(dir / "accuracy.csv", accuracy_csv(*result.accuracy));
+    write_whole_file(dir / "accuracy.csv", accuracy_csv(*result.accuracy));
   }
   say("index.html");
-  write_file(dir / "index.html",
+  write_whole_file(dir / "index.html",
              html_page(result, options.diagrams, options.forces, options.atlas));
 }
 

@@ -14,7 +14,5 @@ inline std::string decimal17(long double v) {
   return format_significant(v, 17);
 }
 
-// Writes `bytes` to `path` (replacing it); throws "cannot write PATH: reason" on failure.
-void write_file(const std::filesystem::path& path, const std::string& bytes);
 
 }  // namespace tripack::report

@@ -179,7 +179,7 @@ void fix_pdf_dates(const fs::path& pdf) {
       }
     }
   }
-  if (changed) write_file(pdf, bytes);
+  if (changed) write_whole_file(pdf, bytes);
 }
 
 // The three terminals, each followed by the plot (the first) or `replot`. The PNG and the SVG
@@ -201,8 +201,8 @@ void render(const fs::path& dir, const std::string& name, const std::string& csv
             const std::string& script) {
   const std::string gnuplot = find_gnuplot();  // before writing anything: fail fast
   const fs::path d = prepare_dir(dir);
-  write_file(d / (name + ".csv"), csv);
-  write_file(d / (name + ".gp"), script);
+  write_whole_file(d / (name + ".csv"), csv);
+  write_whole_file(d / (name + ".gp"), script);
   for (const char* ext : {".svg", ".png", ".pdf"}) {
     std::error_code ec;
     fs::remove(d / (name + ext), ec);

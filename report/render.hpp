@@ -21,6 +21,7 @@
 #include "search/search.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
+#include "report/described.hpp"
 
 namespace tripack::report {
 
@@ -91,6 +92,13 @@ void render(std::ostream& out, const Result& result, OutputFormat format,
     case OutputFormat::Csv:
       return render_csv(out, result, options);
   }
+}
+
+// A described result (core/described.hpp): through the writers' table.
+inline void render(std::ostream& out, const Described& result, OutputFormat format,
+                   const RenderOptions& = {}) {
+  write_described(out, result,
+                  format == OutputFormat::Json ? "json" : (format == OutputFormat::Csv ? "csv" : "text"));
 }
 
 // {"error": message} on one line.

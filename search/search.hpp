@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include "core/option_values.hpp"
+#include "core/options.hpp"
 #include "core/packing.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
@@ -50,6 +52,26 @@ struct SearchRequest {
   // Stage "search": one report per step that changed the best, and one per finished chain.
   ProgressFn progress;
   const CancelToken* cancel = nullptr;  // set: the chains stop after their current step
+
+  void declare(OptionList& o) {
+    o.option("N", n, "number of disks").required().range(2, 100000);
+    o.option("--seconds", seconds, "wall-time budget of each chain").range(1e-3, 1e7);
+    o.option("--steps", steps,
+             "also stop each chain after this many steps (0: no limit); a step budget on one "
+             "thread is exactly reproducible")
+        .range(0, 1e9);
+    o.option("--seed", seed, "seed of chain 0 (chain c uses seed + c)");
+    o.option("--threads", threads, "independent chains, one per thread").range(1, 256);
+    o.choice("--method", method,
+             {{"basin-hopping", SearchMethod::BasinHopping}, {"restarts", SearchMethod::Restarts}},
+             "the search, or independent default billiards runs (the baseline)");
+    o.parsed(
+        "--target", [this](const std::string& s) { target = positive_decimal(s, "--target"); },
+        "none", "stop a chain once a certified d >= this is found");
+    o.flag("!--no-lattice-starts", lattice_starts,
+           "every fresh start from random (by default half are the triangular lattice with "
+           "random vacancies)");
+  }
 };
 
 struct SearchChain {

@@ -1,3 +1,4 @@
+#include "formats/formats.hpp"
 #include "sim/scene.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -128,7 +129,7 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
     std::filesystem::path path(file);
     if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
     try {
-      s.points = read_points_file(path.string()).points;
+      s.points = read_packing_file(path.string()).points;
     } catch (const std::exception& e) {
       fail(std::string("initial file: ") + e.what());
     }

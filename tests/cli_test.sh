@@ -316,7 +316,7 @@ expect_error "db export: n with no packings" "no packings of n = 40" db export 4
 expect_error "db export: rank out of range" "rank 99 is out of range" db export 11 --db "$cdb" --rank 99
 expect_error "db export: unknown format" "--format must be" db export 11 --db "$cdb" --format xml
 expect_error "db export: unknown convention" "unknown convention 'diameter'" db export 11 --db "$cdb" --convention diameter
-expect_error "db export: --rank and --all" "excludes" db export 11 --db "$cdb" --rank 2 --all
+expect_error "db export: --rank and --all" "exclude" db export 11 --db "$cdb" --rank 2 --all
 out=$("$TRIPACK" db best 40 --db "$cdb" --json 2>/dev/null)
 if [ $? -ne 0 ] && grep -qF '{"error":"no packings of n = 40' <<<"$out"; then
   pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: db errors as JSON: $out"; fi
@@ -433,7 +433,7 @@ if [ "$(sqlite3 "$sdb" "SELECT COUNT(*) FROM runs WHERE n = 12 AND seed = 9 AND 
    [ "$(sqlite3 "$sdb" "SELECT COUNT(*) FROM runs WHERE method = 'search 10 s, continued'")" = 1 ]; then
   pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --db"; fi
 rm -f "$sdb" "$sdb-wal" "$sdb-shm" "$sdb.err"
-expect_error "search with an unknown method" "--method must be basin-hopping or restarts" search 12 --method anneal
+expect_error "search with an unknown method" "--method must be one of basin-hopping, restarts" search 12 --method anneal
 expect_error "search with a bad target" "--target must be a positive decimal" search 12 --target 0.2x
 expect_error "search of one disk" "N: Value 1 not in range" search 1
 

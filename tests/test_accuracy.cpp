@@ -35,7 +35,7 @@ const AccuracyStudy& hard() {
   static const AccuracyStudy s = [] {
     AccuracySettings settings;
     settings.n = {};
-    settings.hard_case_dir = TRIPACK_TEST_DATA "/hard";
+    settings.hard_case_dir = TRIPACK_SOURCE_DIR "/data/hard";
     return measure_accuracy(catalogue(), settings);
   }();
   return s;

@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "formats/formats.hpp"
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
@@ -113,7 +114,7 @@ TEST(Explore, EveryWrittenPackingPassesTheCertificateItsRowClaims) {
     for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
     ASSERT_EQ(f.size(), 16u) << line;
     const auto& row = result.packings[rows++];
-    const PointsFile file = read_points_file((dir / f[15]).string());
+    const PointsFile file = read_packing_file((dir / f[15]).string());
     const Packing start = packing_from_points(file, std::nullopt, std::stoll(f[0])).packing;
     const pipeline::Analysis a = pipeline::analyze_packing(start, {});
     // d is printed with 17 digits; the re-analysis polishes again from 21-digit coordinates.

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.hpp"
+#include "formats/formats.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/import.hpp"
 #include "jobs/stored.hpp"
@@ -50,7 +50,7 @@ const Catalogue& catalogue() {
 std::string built_file(const std::string& class_id, long k, const std::string& name) {
   const auto built = pipeline::build_and_certify(catalogue(), {class_id, k, 0, ""}, {});
   const std::string path = (scratch() / name).string();
-  write_pattern(path, built.pattern);
+  std::ofstream(path) << [&] { std::ostringstream s; write_text(s, built.pattern); return s.str(); }();
   return path;
 }
 
@@ -102,7 +102,7 @@ std::string campaign_db(const std::string& name) {
 // `tripack db export N --rank R --format F --convention C -o FILE`.
 std::string exported(const std::string& db, long long n, long long rank, const std::string& format,
                      const std::string& convention) {
-  app::DbExportOptions o;
+  jobs::DbExport o;
   o.db = db;
   o.n = n;
   o.rank = rank;
@@ -110,9 +110,8 @@ std::string exported(const std::string& db, long long n, long long rank, const s
   o.convention = convention;
   const std::string ext = format == "records" ? "pck" : format;
   o.output = (scratch() / fmt::format("t{}.{}.{}.{}", n, rank, convention, ext)).string();
-  testing::internal::CaptureStdout();
-  EXPECT_EQ(app::cmd_db_export(o), 0);
-  testing::internal::GetCapturedStdout();
+  std::ostringstream paths;
+  jobs::export_packings(o, paths);
   return o.output;
 }
 
@@ -175,7 +174,7 @@ TEST(Import, EveryFormatAndConventionReadsBackToTheSamePoints) {
       // The file's own convention line is enough; naming it explicitly gives the same.
       for (const bool explicitly : {false, true}) {
         const auto c = explicitly ? parse_convention(convention) : std::nullopt;
-        const PointsReading reading = packing_from_points(read_points_file(file), c, 12);
+        const PointsReading reading = packing_from_points(read_packing_file(file), c, 12);
         EXPECT_EQ(reading.convention, *parse_convention(convention)) << file;
         ASSERT_EQ(reading.packing.points.size(), want.size()) << file;
         long double worst = 0;
@@ -236,7 +235,7 @@ std::string hexagon_with_moved_disk(const std::string& name, double shift) {
   const Vec2L dir = (p.packing.points[towards] - p.packing.points[moved]) / closest;
   p.packing.points[moved] += dir * (static_cast<long double>(shift) * p.packing.d);
   const std::string path = (scratch() / name).string();
-  write_pattern(path, p);
+  std::ofstream(path) << [&] { std::ostringstream s; write_text(s, p); return s.str(); }();
   return path;
 }
 

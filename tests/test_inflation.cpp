@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "formats/formats.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 #include "search/search.hpp"
@@ -17,7 +18,7 @@ namespace {
 // A packing of the committed atlas (data/atlas/LABEL.txt): found by billiards and polished,
 // none of it by the inflation.
 Packing atlas_packing(const std::string& label) {
-  const PointsFile file = read_points_file(
+  const PointsFile file = read_packing_file(
       (std::filesystem::path(TRIPACK_SOURCE_DIR) / "data" / "atlas" / (label + ".txt")).string());
   Packing p;
   p.points = file.points;

@@ -7,6 +7,7 @@
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "formats/formats.hpp"
 #include "near_long_double.hpp"
 
 namespace tripack {
@@ -22,46 +23,51 @@ Pattern sample() {
   return p;
 }
 
+// A stream read by the format table's reader of `name` (formats/formats.hpp).
+PointsFile read_as(std::istream& in, const std::string& name) {
+  return find_format(name)->read(in);
+}
+
 TEST(Io, RoundTripIsExactInEveryFormat) {
   const Pattern p = sample();
-  for (auto fmt : {FileFormat::Text, FileFormat::Csv, FileFormat::Json}) {
+  for (std::string fmt : {"txt", "csv", "json"}) {
     std::stringstream ss;
-    if (fmt == FileFormat::Text) write_text(ss, p);
-    if (fmt == FileFormat::Csv) write_csv(ss, p);
-    if (fmt == FileFormat::Json) write_json(ss, p);
-    const PointsFile back = read_points(ss, fmt);
+    if (fmt == "txt") write_text(ss, p);
+    if (fmt == "csv") write_csv(ss, p);
+    if (fmt == "json") write_json(ss, p);
+    const PointsFile back = read_as(ss, fmt);
     const auto& pts = back.points;
     ASSERT_EQ(pts.size(), p.packing.points.size());
     // 21 digits round-trip a long double exactly (text, CSV, and JSON's points_exact).
     for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(pts[i], p.packing.points[i]);
     // Text and JSON state d, which packing_from_points checks against the points.
-    if (fmt != FileFormat::Csv) {
+    if (fmt != "csv") {
       EXPECT_EQ(back.declared_d, p.packing.d);
     }
   }
 }
 
 TEST(Io, FormatFromExtension) {
-  EXPECT_EQ(format_from_path("a.csv"), FileFormat::Csv);
-  EXPECT_EQ(format_from_path("dir/a.json"), FileFormat::Json);
-  EXPECT_EQ(format_from_path("a.txt"), FileFormat::Text);
-  EXPECT_EQ(format_from_path("a"), FileFormat::Text);
-  EXPECT_EQ(format_from_path("t22a.pck"), FileFormat::Records);
-  EXPECT_EQ(format_from_path("t22a.records"), FileFormat::Records);
+  EXPECT_EQ(format_of_path("a.csv").name, "csv");
+  EXPECT_EQ(format_of_path("dir/a.json").name, "json");
+  EXPECT_EQ(format_of_path("a.txt").name, "txt");
+  EXPECT_EQ(format_of_path("a").name, "txt");
+  EXPECT_EQ(format_of_path("t22a.pck").name, "records");
+  EXPECT_EQ(format_of_path("t22a.records").name, "records");
 }
 
 TEST(Io, PlainCsvWithoutIndexAndHeader) {
   std::stringstream ss("x,y\n0.1,0.2\n0.3,0.4\n");
-  const auto pts = read_points(ss, FileFormat::Csv).points;
+  const auto pts = read_as(ss, "csv").points;
   ASSERT_EQ(pts.size(), 2u);
   EXPECT_EQ(pts[1], Vec2L(0.3L, 0.4L));
 }
 
 TEST(Io, MalformedInputThrowsWithTheLine) {
-  auto fails = [](const std::string& text, FileFormat f, const std::string& needle) {
+  auto fails = [](const std::string& text, const std::string& f, const std::string& needle) {
     std::stringstream ss(text);
     try {
-      read_points(ss, f);
+      read_as(ss, f);
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
       EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);  // one line
@@ -69,19 +75,19 @@ TEST(Io, MalformedInputThrowsWithTheLine) {
     }
     ADD_FAILURE() << "no error for: " << text;
   };
-  fails("0.1 0.2\n0.3 x\n", FileFormat::Text, "line 2");
-  fails("0.1 0.2 0.3 0.4\n", FileFormat::Text, "line 1");
-  fails("0.1 nan\n", FileFormat::Text, "finite");
-  fails("0.1 inf\n", FileFormat::Text, "finite");
-  fails("x,y\n1,2\nfoo,bar\n", FileFormat::Csv, "line 3");
-  fails("{\"points\": [[0,1],[2]]}", FileFormat::Json, "point 1");
-  fails("{\"pts\": []}", FileFormat::Json, "points");
-  fails("{\"points\": [[0,1]", FileFormat::Json, "malformed JSON");
+  fails("0.1 0.2\n0.3 x\n", "txt", "line 2");
+  fails("0.1 0.2 0.3 0.4\n", "txt", "line 1");
+  fails("0.1 nan\n", "txt", "finite");
+  fails("0.1 inf\n", "txt", "finite");
+  fails("x,y\n1,2\nfoo,bar\n", "csv", "line 3");
+  fails("{\"points\": [[0,1],[2]]}", "json", "point 1");
+  fails("{\"pts\": []}", "json", "points");
+  fails("{\"points\": [[0,1]", "json", "malformed JSON");
 }
 
 TEST(Io, JsonWithPlainNumbersOnly) {
   std::stringstream ss("{\"points\": [[0.25, 0.5], [0.75, 0.125]]}");
-  const auto pts = read_points(ss, FileFormat::Json).points;
+  const auto pts = read_as(ss, "json").points;
   ASSERT_EQ(pts.size(), 2u);
   EXPECT_EQ(pts[1], Vec2L(0.75L, 0.125L));  // exact binary fractions
 }
@@ -110,7 +116,7 @@ TEST(Io, RecordsRoundTripAndHeader) {
   EXPECT_EQ(table.S, format_significant(side_from_d(sample().packing.d), 21));
   EXPECT_EQ(table.L, format_significant(1 / sample().packing.d, 21));
   EXPECT_NE(text.find("\n3 0.5 0.288675134594812882"), std::string::npos) << text;
-  const PointsFile back = read_points(ss, FileFormat::Records);
+  const PointsFile back = read_as(ss, "records");
   EXPECT_EQ(back.layout, "i x y");
   ASSERT_TRUE(back.declared_d);
   EXPECT_EQ(*back.declared_d, sample().packing.d);
@@ -152,7 +158,7 @@ void expect_same_points(const std::vector<Vec2L>& got, const std::vector<Vec2L>&
 }
 
 TEST(Io, EveryLayoutReadsTheSame22Points) {
-  const PointsFile reference = read_points_file(layout_file("t22a.xy.txt"));
+  const PointsFile reference = read_packing_file(layout_file("t22a.xy.txt"));
   ASSERT_EQ(reference.points.size(), 22u);
   EXPECT_EQ(reference.layout, "x y");
   EXPECT_FALSE(reference.radius);
@@ -167,7 +173,7 @@ TEST(Io, EveryLayoutReadsTheSame22Points) {
         Case{"t22a.points.json", "json points", kDigits17},
         Case{"t22a.list.json", "json list", kDigits17}, Case{"t22a.pck", "i x y", kDigits17},
         Case{"t22a.rounded6.txt", "x y", kDecimals6}}) {
-    const PointsFile f = read_points_file(layout_file(c.file));
+    const PointsFile f = read_packing_file(layout_file(c.file));
     EXPECT_EQ(f.layout, c.layout) << c.file;
     EXPECT_FALSE(f.radius) << c.file;
     expect_same_points(f.points, want, c.tolerance, c.file);
@@ -175,7 +181,7 @@ TEST(Io, EveryLayoutReadsTheSame22Points) {
 
   // Radius convention: circles of radius r in the side-1 triangle; their centres fill the
   // triangle inset by r: corner (sqrt3 r, r), side 1 - 2 sqrt3 r (docs/conventions.md).
-  const PointsFile xyr = read_points_file(layout_file("t22a.xyr.txt"));
+  const PointsFile xyr = read_packing_file(layout_file("t22a.xyr.txt"));
   EXPECT_EQ(xyr.layout, "x y r");
   ASSERT_TRUE(xyr.radius);
   const long double r = radius_from_d(*reference.declared_d);
@@ -188,16 +194,16 @@ TEST(Io, EveryLayoutReadsTheSame22Points) {
     transposed.push_back({c.y, c.x});
   }
   expect_same_points(xyr.points, circles, kDigits17, "x y r");
-  const PointsFile ud = read_points_file(layout_file("t22a.upside-down.txt"));
+  const PointsFile ud = read_packing_file(layout_file("t22a.upside-down.txt"));
   expect_same_points(ud.points, upside_down, kDigits17, "upside down");
-  const PointsFile tr = read_points_file(layout_file("t22a.transposed.txt"));
+  const PointsFile tr = read_packing_file(layout_file("t22a.transposed.txt"));
   expect_same_points(tr.points, transposed, kDigits17, "transposed");
 }
 
 // Reading `name` fails with one line naming the path and containing every needle.
 void expect_bad_file(const std::string& name, std::initializer_list<const char*> needles) {
   try {
-    read_points_file(layout_file(name));
+    read_packing_file(layout_file(name));
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
@@ -225,9 +231,9 @@ TEST(Io, EveryBadLayoutFileGivesOneLineNamingTheLine) {
 
 // ----- three columns: x y r or i x y ---------------------------------------------------------
 
-PointsFile read_text(const std::string& text, FileFormat format = FileFormat::Text) {
+PointsFile read_text(const std::string& text, std::string format = "txt") {
   std::stringstream ss(text);
-  return read_points(ss, format);
+  return read_as(ss, format);
 }
 
 TEST(Io, ThreeColumnsAreToldApart) {
@@ -254,7 +260,7 @@ TEST(Io, ThreeColumnsAreToldApart) {
         << e.what();
   }
   // Records files are i x y even when the third column is constant.
-  EXPECT_EQ(read_text("1 0.5 0.5\n0 0.2 0.5\n", FileFormat::Records).points[0], Vec2L(0.2L, 0.5L));
+  EXPECT_EQ(read_text("1 0.5 0.5\n0 0.2 0.5\n", "records").points[0], Vec2L(0.2L, 0.5L));
 }
 
 // ----- CSV headers and JSON shapes -----------------------------------------------------------
@@ -263,17 +269,17 @@ TEST(Io, CsvHeaderNamesTheColumns) {
   const PointsFile f = read_text(
       " Radius , ID,rattler, Y ,X,label\n0.05,1,0,0.2,0.1,a\n"
       "0.05,0,1,\"0.4\",0.3,b\n",
-      FileFormat::Csv);
+      "csv");
   EXPECT_EQ(f.layout, "csv");
   EXPECT_EQ(f.radius, 0.05L);
   ASSERT_EQ(f.points.size(), 2u);
   EXPECT_EQ(f.points[0], Vec2L(0.3L, 0.4L));  // ordered by id, quoted number read
   EXPECT_EQ(f.points[1], Vec2L(0.1L, 0.2L));
   // Header-less three columns are told apart like text.
-  EXPECT_EQ(read_text("0.1,0.2,0.05\n0.3,0.4,0.05\n", FileFormat::Csv).radius, 0.05L);
+  EXPECT_EQ(read_text("0.1,0.2,0.05\n0.3,0.4,0.05\n", "csv").radius, 0.05L);
   auto fails = [](const std::string& text, const std::string& needle) {
     try {
-      read_text(text, FileFormat::Csv);
+      read_text(text, "csv");
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
       return;
@@ -288,16 +294,16 @@ TEST(Io, CsvHeaderNamesTheColumns) {
 
 TEST(Io, JsonShapes) {
   const PointsFile objects = read_text(
-      R"({"points": [{"x": 0.25, "y": "0.5"}, {"y": 0.125, "x": 0.75}]})", FileFormat::Json);
+      R"({"points": [{"x": 0.25, "y": "0.5"}, {"y": 0.125, "x": 0.75}]})", "json");
   EXPECT_EQ(objects.layout, "json points");
   ASSERT_EQ(objects.points.size(), 2u);
   EXPECT_EQ(objects.points[1], Vec2L(0.75L, 0.125L));
-  const PointsFile list = read_text(R"([[0.25, 0.5], ["0.75", 0.125]])", FileFormat::Json);
+  const PointsFile list = read_text(R"([[0.25, 0.5], ["0.75", 0.125]])", "json");
   EXPECT_EQ(list.layout, "json list");
   EXPECT_EQ(list.points[1], Vec2L(0.75L, 0.125L));
   // Numbers are parsed to long double, not through double.
   const PointsFile precise =
-      read_text(R"([[0.179396908611865979561, 0.1], [0.2, 0.3]])", FileFormat::Json);
+      read_text(R"([[0.179396908611865979561, 0.1], [0.2, 0.3]])", "json");
   EXPECT_EQ(precise.points[0].x, 0.179396908611865979561L);
   EXPECT_NE(precise.points[0].x, static_cast<long double>(0.179396908611865979561));
 }

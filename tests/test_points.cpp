@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "formats/formats.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "near_long_double.hpp"
@@ -33,7 +34,7 @@ std::string layout_file(const std::string& name) {
 }
 
 PointsReading reading_of(const std::string& name, std::optional<Convention> convention = {}) {
-  return packing_from_points(read_points_file(layout_file(name)), convention, 22);
+  return packing_from_points(read_packing_file(layout_file(name)), convention, 22);
 }
 
 bool contains(const std::string& text, const std::string& needle) {
@@ -76,7 +77,7 @@ TEST(Points, RoundedCoordinatesAreMovedOntoTheSidesWithOneWarning) {
     for (Side s : kSides) EXPECT_GE(wall_distance(p, s, 1.0L), -1e-18L);
   // A tighter tolerance turns the same slip into an error naming the point.
   try {
-    packing_from_points(read_points_file(layout_file("t22a.rounded6.txt")), {}, 22, 1e-8L);
+    packing_from_points(read_packing_file(layout_file("t22a.rounded6.txt")), {}, 22, 1e-8L);
     ADD_FAILURE() << "accepted with tolerance 1e-8";
   } catch (const InputError& e) {
     EXPECT_TRUE(contains(e.what(), "outside the unit triangle")) << e.what();
@@ -106,7 +107,7 @@ TEST(Points, UpsideDownAndTransposedContainersGiveTheSamePacking) {
 
 TEST(Points, UnitDiskSideScalesLikeRadius) {
   // Circles of radius 1: the x y r file's centres over r, in a container of side S.
-  PointsFile file = read_points_file(layout_file("t22a.xyr.txt"));
+  PointsFile file = read_packing_file(layout_file("t22a.xyr.txt"));
   const long double r = *file.radius;
   for (auto& p : file.points) p = p / r;
   file.radius.reset();
@@ -124,7 +125,7 @@ TEST(Points, RadiusFileChecksItsR) {
 }
 
 TEST(Points, HeaderDIsChecked) {
-  PointsFile file = read_points_file(layout_file("t22a.xy.txt"));
+  PointsFile file = read_packing_file(layout_file("t22a.xy.txt"));
   ASSERT_TRUE(file.declared_d);
   // 21 digits of the polished d (within 1e-20 of d(22)) parsed to long double (half an ulp:
   // 1.4e-20).
@@ -150,7 +151,7 @@ void expect_rejected(const PointsFile& file, std::optional<Convention> conventio
 }
 
 TEST(Points, BadPointSetsAreRejectedWithOneLine) {
-  auto file = [](const char* name) { return read_points_file(layout_file(name)); };
+  auto file = [](const char* name) { return read_packing_file(layout_file(name)); };
   expect_rejected(file("t22a.bad-outside.txt"), {}, 22,
                   {"point 17", "0.001 outside the unit triangle", "bottom side", "--convention"});
   expect_rejected(file("t22a.bad-flipped.txt"), {}, 22,

@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "formats/formats.hpp"
 #include "analysis/compare.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/catalogue.hpp"
@@ -75,7 +76,7 @@ TEST(SparseCorner, SameContactGraphAsTheBilliardsPackings) {
   // The stored billiards end states (docs/class6/*.txt), certified anew, are the built packings:
   // same d, and one symmetry of the triangle maps points and bonds onto each other.
   for (const Found& f : kFound) {
-    const PointsReading reading = packing_from_points(read_points_file(found_file(f)), {}, f.n);
+    const PointsReading reading = packing_from_points(read_packing_file(found_file(f)), {}, f.n);
     const pipeline::Analysis a = analysed(reading.packing);
     ASSERT_TRUE(a.certified()) << f.label << ": " << a.status();
     const Comparison cmp = compare_packings(built(f.k), a.pattern);

@@ -30,6 +30,14 @@ const std::vector<PackingFormat>& packing_formats();
 const PackingFormat* find_format(const std::string& name);
 // By the path's extension; the text format for any other.
 const PackingFormat& format_of_path(const std::string& path);
+// By the path's extension; nullptr for an extension no format has.
+const PackingFormat* format_of_extension(const std::string& path);
+// The format called `name` given to `option`; throws "OPTION must be one of txt, csv, ...".
+const PackingFormat& format_named(const std::string& name, const std::string& option);
+
+// The points of a packing file, read by its format (by extension; text for any other). Errors
+// are InputError, one line prefixed with the path.
+PointsFile read_packing_file(const std::string& path);
 // "txt, csv, json, records, xyz": for one-line errors.
 std::string format_names();
 

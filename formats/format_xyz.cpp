@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <ostream>
 
-#include "report/formats.hpp"
+#include "formats/formats.hpp"
 
 namespace tripack {
 

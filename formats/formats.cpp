@@ -1,7 +1,8 @@
-#include "report/formats.hpp"
+#include "formats/formats.hpp"
 
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "polish/polish_mp.hpp"
 
@@ -68,24 +69,19 @@ void records_writer(std::ostream& out, const PackingRecord& r, const WriteOption
   write_records(out, table);
 }
 
-template <FileFormat F>
-PointsFile reader(std::istream& in) {
-  return read_points(in, F);
-}
-
 }  // namespace
 
 const std::vector<PackingFormat>& packing_formats() {
   static const std::vector<PackingFormat> formats{
-      {"txt", {".txt"}, reader<FileFormat::Text>, text_writer, "x y lines under a # header"},
-      {"csv", {".csv"}, reader<FileFormat::Csv>, csv_writer, "index,x,y,rattler"},
-      {"json", {".json"}, reader<FileFormat::Json>, json_writer, "{\"points\": ..., \"d\": ...}"},
+      {"txt", {".txt"}, read_text_points, text_writer, "x y lines under a # header"},
+      {"csv", {".csv"}, read_csv_points, csv_writer, "index,x,y,rattler"},
+      {"json", {".json"}, read_json_points, json_writer, "{\"points\": ..., \"d\": ...}"},
       {"records",
        {".pck", ".records"},
-       reader<FileFormat::Records>,
+       read_records_points,
        records_writer,
        "i x y lines with d, r, S, L in the header"},
-      {"xyz", {".xyz"}, nullptr, write_extended_xyz, "extended XYZ (OVITO, VMD): written only"},
+      {"xyz", {".xyz"}, nullptr, write_extended_xyz, "extended XYZ (OVITO, VMD, ASE)"},
   };
   return formats;
 }
@@ -97,11 +93,35 @@ const PackingFormat* find_format(const std::string& name) {
 }
 
 const PackingFormat& format_of_path(const std::string& path) {
+  const PackingFormat* f = format_of_extension(path);
+  return f ? *f : packing_formats().front();
+}
+
+const PackingFormat& format_named(const std::string& name, const std::string& option) {
+  if (const PackingFormat* f = find_format(name)) return *f;
+  throw std::invalid_argument(option + " must be one of " + format_names() + ", not '" + name +
+                              "'");
+}
+
+const PackingFormat* format_of_extension(const std::string& path) {
   for (const auto& f : packing_formats())
     for (const auto& ext : f.extensions)
       if (path.size() >= ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0)
-        return f;
-  return packing_formats().front();
+        return &f;
+  return nullptr;
+}
+
+PointsFile read_packing_file(const std::string& path) {
+  const PackingFormat& format = format_of_path(path);
+  if (!format.read)
+    throw InputError(path + ": tripack writes " + format.name + " files but does not read them");
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read '" + path + "'");
+  try {
+    return format.read(in);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 std::string format_names() {

@@ -1,0 +1,44 @@
+// A tripack command: its options, bound to the fields of the request it runs, and its run. The
+// command table (commands/table.cpp) lists every command once, with whether it is a long job
+// (stops between items on Ctrl-C or SIGTERM, exit 130); app/ only parses and dispatches.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/options.hpp"
+#include "core/progress.hpp"
+
+namespace tripack::commands {
+
+struct Context {
+  std::string catalogue;                // --catalogue; empty: the default
+  const CancelToken* cancel = nullptr;  // set for the long jobs
+};
+
+class Command {
+ public:
+  virtual ~Command() = default;
+  virtual void declare(OptionList& options) = 0;
+  // The exit code: 0, or kCancelledExit when a long job was cancelled. Errors are thrown (one
+  // line, exit 1); results found before an error are written first.
+  virtual int run(const Context& context) = 0;
+};
+
+inline constexpr int kCancelledExit = 130;
+
+struct CommandEntry {
+  std::string name;  // "build"; "db export" is the subcommand export of the group db
+  std::string summary;
+  bool long_job = false;
+  std::function<std::unique_ptr<Command>()> make;
+};
+
+// Every command, in the order the help lists them.
+const std::vector<CommandEntry>& command_table();
+// The summary of a group of subcommands ("db").
+std::string group_summary(const std::string& group);
+
+}  // namespace tripack::commands

@@ -1,0 +1,74 @@
+#include "commands/common.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/io.hpp"
+#include "report/diagram.hpp"
+
+namespace tripack::commands {
+
+Catalogue load_catalogue(const Context& context) {
+  return Catalogue::load(context.catalogue.empty() ? Catalogue::default_path() : context.catalogue);
+}
+
+void Output::declare(OptionList& o, bool with_points) {
+  o.flag("--json", json, "print one JSON object");
+  o.flag("--csv", csv, "print CSV (a header, then rows)");
+  if (with_points) o.flag("--points", points, "with --json: every packing's coordinates");
+}
+
+void Diagrams::declare(OptionList& o) {
+  o.option("--svg", svg, "draw the packing to this SVG file");
+  o.option("--png", png, "draw the packing to this PNG file");
+  o.option("--pdf", pdf, "draw the packing to this PDF file");
+  o.flag("--forces", forces, "draw the stress certificate's bond forces as widths");
+}
+
+void Diagrams::draw(const Pattern& pattern, const std::string& label,
+                    const std::vector<long double>& bond_forces) const {
+  report::Diagram diagram{pattern, label, format_significant(pattern.packing.d, 15), bond_forces};
+  report::DiagramOptions options;
+  options.forces = forces;
+  for (const auto* path : {&svg, &png, &pdf})
+    if (!path->empty()) report::draw_packing(diagram, *path, options);
+}
+
+report::ProgressLineOptions terminal_line(std::string job, const Output& out,
+                                          double quiet_seconds) {
+  report::ProgressLineOptions options;
+  options.job = std::move(job);
+  options.terminal = !out.json && !out.csv && isatty(fileno(stderr));
+  options.quiet_seconds = quiet_seconds;
+  return options;
+}
+
+report::ProgressLineOptions job_line(std::string job, long long log_every) {
+  report::ProgressLineOptions options;
+  options.job = std::move(job);
+  options.terminal = isatty(fileno(stderr));
+  options.log_every = log_every;
+  return options;
+}
+
+std::filesystem::path writable_directory(const std::string& name) {
+  const std::filesystem::path dir(name);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir) || access(dir.c_str(), W_OK) != 0)
+    throw std::runtime_error("cannot write to directory '" + name + "'");
+  return dir;
+}
+
+int cancelled(const std::string& what) {
+  std::cerr << "tripack: cancelled: interrupted; " << what << "\n";
+  return kCancelledExit;
+}
+
+std::string tool_version() {
+  return "tripack " TRIPACK_VERSION;
+}
+
+}  // namespace tripack::commands

@@ -1,0 +1,78 @@
+// What the commands share: the output options (--json, --csv, --points) and diagrams (--svg,
+// --png, --pdf), printing a result whole, progress lines, the output directory, and how a
+// cancelled job ends.
+#pragma once
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands/command.hpp"
+#include "constructors/catalogue.hpp"
+#include "core/packing.hpp"
+#include "report/progress_line.hpp"
+#include "report/render.hpp"
+
+namespace tripack::commands {
+
+Catalogue load_catalogue(const Context& context);
+
+// --json / --csv / --points: how the result is printed.
+struct Output {
+  bool json = false, csv = false;
+  bool points = false;  // JSON: with coordinates
+  void declare(OptionList& o, bool with_points = false);
+  report::OutputFormat format() const {
+    return json ? report::OutputFormat::Json
+                : (csv ? report::OutputFormat::Csv : report::OutputFormat::Text);
+  }
+};
+
+// --svg FILE / --png FILE / --pdf FILE: a diagram of the result's packing (report/diagram.hpp).
+struct Diagrams {
+  std::string svg, png, pdf;
+  bool forces = false;  // bond forces of the stress certificate as line widths
+  void declare(OptionList& o);
+  void draw(const Pattern& pattern, const std::string& label,
+            const std::vector<long double>& forces) const;
+};
+
+// Rendered into a buffer first, so that a formatting failure cannot leave half a result: then the
+// text rendering (which cannot fail on content) is printed instead, and the error reported.
+template <class Result>
+void print_result(const Result& result, const Output& out) {
+  std::ostringstream buffer;
+  try {
+    report::render(buffer, result, out.format(), {out.points});
+  } catch (const std::exception& e) {
+    std::ostringstream text;
+    report::render(text, result, report::OutputFormat::Text, {out.points});
+    std::cout << text.str() << std::flush;
+    throw std::runtime_error(std::string("could not format the result (printed as text): ") +
+                             e.what());
+  }
+  std::cout << buffer.str() << std::flush;
+}
+
+// The progress line of a command whose result goes to stdout: on a terminal, and only when the
+// result is text. Stages reported after quiet_seconds.
+report::ProgressLineOptions terminal_line(std::string job, const Output& out,
+                                          double quiet_seconds = 0);
+// A long job's progress: redrawn on a terminal; in a log, every `log_every`-th item.
+report::ProgressLineOptions job_line(std::string job, long long log_every);
+
+// The directory, created if needed; checked before any work so a long run cannot end in an
+// unwritable place.
+std::filesystem::path writable_directory(const std::string& name);
+
+// How every cancelled long job ends: one line "tripack: cancelled: interrupted; WHAT" on stderr
+// and exit kCancelledExit.
+int cancelled(const std::string& what);
+
+// "tripack VERSION": what the database records as the tool of a run.
+std::string tool_version();
+
+}  // namespace tripack::commands

@@ -1,0 +1,130 @@
+// The database commands: db best, check, export, import, prune.
+#include <limits>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands/common.hpp"
+#include "core/option_values.hpp"
+#include "jobs/import.hpp"
+#include "jobs/stored.hpp"
+
+namespace tripack::commands {
+
+namespace {
+
+constexpr const char* kDbHelp = "results database";
+
+class DbBest : public Command {
+  std::string db = "tripack.db";
+  long long n = 0;  // 0: every n
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    o.option("N", n, "only this n").range(2, 1e8);
+    o.option("--db", db, kDbHelp);
+    out.declare(o, true);
+  }
+  int run(const Context&) override {
+    const auto table = n ? jobs::best_table(db, n, n)
+                         : jobs::best_table(db, 0, std::numeric_limits<long long>::max());
+    if (n && table.rows.empty())
+      throw std::invalid_argument(fmt::format("no packings of n = {} in {}", n, db));
+    print_result(table, out);
+    return 0;
+  }
+};
+
+class DbCheck : public Command {
+  std::string db = "tripack.db";
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    o.option("--db", db, kDbHelp);
+    out.declare(o);
+  }
+  int run(const Context&) override {
+    const jobs::DbCheck check = jobs::check_database(db);
+    if (check.stats.integrity != "ok")
+      throw std::runtime_error("database " + db +
+                               " fails the integrity check: " + check.stats.integrity);
+    print_result(check, out);
+    if (check.duplicates() > 0) {
+      // The result is printed (one JSON object with --json); the failure is one line on stderr.
+      std::cerr << fmt::format(
+          "tripack: error: database {} holds duplicates: {} runs with a repeated (n, seed), {} "
+          "packings with a repeated (n, contact graph, d to 12 digits)\n",
+          db, check.stats.duplicate_runs, check.stats.duplicate_packings);
+      return 1;
+    }
+    return 0;
+  }
+};
+
+class DbExport : public Command {
+  jobs::DbExport request;
+
+ public:
+  void declare(OptionList& o) override { request.declare(o); }
+  int run(const Context&) override {
+    jobs::export_packings(request, std::cout);
+    return 0;
+  }
+};
+
+class DbImport : public Command {
+  jobs::ImportRequest request;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    out.declare(o);
+  }
+  int run(const Context& c) override {
+    request.cancel = c.cancel;
+    request.tool_version = tool_version();
+    report::ProgressLine progress(std::cerr, terminal_line("import", out, 2));
+    request.progress = progress.callback();
+    const auto result = jobs::import_packings(request);
+    progress.finish();
+    for (const auto& x : result.packings)
+      for (const auto& warning : x.warnings)
+        std::cerr << "tripack: warning: " << x.file << ": " << warning << "\n";
+    print_result(result, out);
+    return 0;
+  }
+};
+
+class DbPrune : public Command {
+  std::string db = "tripack.db";
+  long long keep = 0;  // packings kept per n
+  std::pair<long long, long long> n{0, std::numeric_limits<long long>::max()};
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    o.option("--keep", keep, "packings kept per n").required().range(1, 1e9);
+    o.parsed(
+        "--n", [this](const std::string& s) { n = parse_range(s, "--n"); }, "every n",
+        "only n in A..B (or N)");
+    o.option("--db", db, kDbHelp);
+    out.declare(o);
+  }
+  int run(const Context&) override {
+    print_result(jobs::prune_database(db, keep, n.first, n.second), out);
+    return 0;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_db_best() { return std::make_unique<DbBest>(); }
+std::unique_ptr<Command> make_db_check() { return std::make_unique<DbCheck>(); }
+std::unique_ptr<Command> make_db_export() { return std::make_unique<DbExport>(); }
+std::unique_ptr<Command> make_db_import() { return std::make_unique<DbImport>(); }
+std::unique_ptr<Command> make_db_prune() { return std::make_unique<DbPrune>(); }
+
+}  // namespace tripack::commands

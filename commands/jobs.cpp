@@ -1,0 +1,209 @@
+// The long workflows: explore, campaign, atlas, exact, exact-atlas.
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "commands/common.hpp"
+#include "core/data_directory.hpp"
+#include "jobs/atlas.hpp"
+#include "jobs/atlas_files.hpp"
+#include "jobs/campaign.hpp"
+#include "jobs/exact_atlas.hpp"
+#include "jobs/explore.hpp"
+#include "jobs/stored.hpp"
+#include "report/explore_report.hpp"
+#include "report/plot.hpp"
+#include "runner/ranks.hpp"
+
+namespace tripack::commands {
+
+namespace {
+
+class Explore : public Command {
+  jobs::ExploreSettings settings;
+  std::string out = "report";
+  std::string atlas;  // empty: the installed atlas when there is one; "none": no atlas
+
+ public:
+  void declare(OptionList& o) override {
+    settings.declare(o);
+    o.option("--out", out, "report directory");
+    o.option("--atlas", atlas,
+             "atlas.csv to show beside the exploration (default: the installed atlas when "
+             "present; 'none': no atlas)");
+  }
+  int run(const Context& c) override {
+    const Catalogue catalogue = load_catalogue(c);
+    report::find_gnuplot();  // before any work: a missing gnuplot is one line, not a lost hour
+    const std::filesystem::path dir = writable_directory(out);
+    const double estimate = jobs::estimated_explore_seconds(catalogue, settings);
+    if (estimate > 300)
+      std::cerr << fmt::format(
+          "tripack: warning: this exploration is estimated at ~{:.0f} minutes on 2 cores (the "
+          "defaults take about 6); Ctrl-C stops it with a consistent report of what finished\n",
+          estimate / 60);
+    // The atlas is read (every file analysed) before the exploration: a bad one costs nothing.
+    std::optional<report::ExploreAtlas> shown;
+    std::filesystem::path csv = atlas;
+    if (atlas.empty()) {
+      std::error_code ec;
+      try {
+        csv = data_directory() / "atlas.csv";
+      } catch (const std::exception&) {
+        csv.clear();
+      }
+      if (!csv.empty() && !std::filesystem::exists(csv, ec)) csv.clear();
+    }
+    if (atlas != "none" && !csv.empty()) {
+      auto rows = jobs::read_atlas(csv);
+      std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
+                               csv.string(), rows.size());
+      const auto gaps_csv = csv.parent_path() / "atlas-gaps.csv";
+      shown = report::ExploreAtlas{
+          csv, std::move(rows), jobs::load_atlas(csv, 1),
+          std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
+                                            : std::vector<jobs::AtlasGap>{},
+          jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
+    }
+    const CancelToken never;
+    report::ProgressLine progress(std::cerr, job_line("explore", 0));
+    const auto result =
+        jobs::explore(catalogue, settings, c.cancel ? *c.cancel : never, progress.callback());
+    progress.finish();
+    report::ExploreReportOptions report_options;
+    report_options.atlas = shown ? &*shown : nullptr;
+    report::write_explore_report(result, dir, report_options, [](const std::string& what) {
+      std::cerr << "explore: writing " << what << "\n";
+    });
+    print_result(Described{"explore"}
+                     .number("packings", std::to_string(result.packings.size()))
+                     .number("comparisons", std::to_string(result.comparisons.size()))
+                     .number("seconds", fmt::format("{:.1f}", result.seconds))
+                     .text("report", (dir / "index.html").string()),
+                 Output{});
+    return result.interrupted ? cancelled("the report holds what finished") : 0;
+  }
+};
+
+class Campaign : public Command {
+  jobs::CampaignRequest request;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    out.declare(o, true);
+  }
+  int run(const Context& c) override {
+    request.tool_version = tool_version();
+    // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a
+    // log every recorded unit is one line (what a batch job, or the soak test, checks after a
+    // kill).
+    const std::unique_ptr<Executor> executor = executor_for_launch(request.threads);
+    std::optional<report::ProgressLine> progress;
+    if (executor->rank() == 0) progress.emplace(std::cerr, job_line("campaign", 1));
+    const auto result = jobs::run_campaign(request, *executor, c.cancel,
+                                           progress ? progress->callback() : ProgressFn{});
+    if (progress) progress->finish();
+    if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
+    // The database's best of every n in the range, labelled like `db best`.
+    const report::CampaignReport report{
+        request.n_first, request.n_last, request.runs, request.db, result,
+        jobs::best_table(request.db, request.n_first, request.n_last)};
+    print_result(report, out);
+    return result.cancelled ? cancelled("every finished unit is recorded; rerun to continue") : 0;
+  }
+};
+
+class Atlas : public Command {
+  jobs::AtlasSettings settings;
+  std::string db = "data/atlas.db";
+  std::string out_dir = "data";
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    o.option("--db", db, "the campaign database");
+    o.option("--out", out_dir, "the data directory");
+    settings.declare(o);
+    out.declare(o);
+  }
+  int run(const Context& c) override {
+    const Catalogue catalogue = load_catalogue(c);
+    const std::filesystem::path dir = writable_directory(out_dir);
+    report::ProgressLine progress(std::cerr, job_line("atlas", 20));
+    const auto atlas = jobs::build_atlas(catalogue, db, settings, c.cancel, progress.callback());
+    progress.finish();
+    if (atlas.interrupted) return cancelled("nothing written");
+    jobs::write_atlas(atlas, dir);
+    print_result(atlas, out);
+    if (!atlas.errors.empty() || !atlas.missing.empty())
+      throw std::runtime_error(fmt::format(
+          "the atlas was written, but {} candidate{} failed and {} value{} of n have no "
+          "certified packing (listed above)",
+          atlas.errors.size(), atlas.errors.size() == 1 ? "" : "s", atlas.missing.size(),
+          atlas.missing.size() == 1 ? "" : "s"));
+    return 0;
+  }
+};
+
+class Exact : public Command {
+  jobs::ExactRequest request;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    out.declare(o);
+  }
+  int run(const Context& c) override {
+    const Catalogue catalogue = request.class_id.empty() ? Catalogue{} : load_catalogue(c);
+    print_result(jobs::run_exact(catalogue, request), out);
+    return 0;
+  }
+};
+
+class ExactAtlas : public Command {
+  jobs::ExactAtlasSettings settings;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    settings.declare(o);
+    out.declare(o);
+  }
+  int run(const Context& c) override {
+    if (settings.atlas.empty()) settings.atlas = data_directory() / "atlas.csv";
+    if (settings.out.empty()) settings.out = settings.atlas.parent_path();
+    writable_directory(settings.out.string());
+    report::ProgressLine progress(std::cerr, job_line("exact-atlas", 1));
+    const auto result = jobs::build_exact_atlas(settings, c.cancel, progress.callback());
+    progress.finish();
+    std::map<std::string, int> proofs;
+    for (const auto& r : result.done) ++proofs[r.proof];
+    print_result(Described{"exact atlas"}
+                     .number("rows", std::to_string(result.rows))
+                     .number("already_done", std::to_string(result.skipped))
+                     .number("done_now", std::to_string(result.done.size()))
+                     .number("exact", std::to_string(proofs["exact"]))
+                     .number("existence", std::to_string(proofs["existence"]))
+                     .number("none", std::to_string(proofs["none"]))
+                     .number("seconds", fmt::format("{:.1f}", result.seconds))
+                     .text("table", (settings.out / "atlas-exact.csv").string()),
+                 out);
+    return result.cancelled ? cancelled("every finished row is in the table; rerun to continue")
+                            : 0;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_explore() { return std::make_unique<Explore>(); }
+std::unique_ptr<Command> make_campaign() { return std::make_unique<Campaign>(); }
+std::unique_ptr<Command> make_atlas() { return std::make_unique<Atlas>(); }
+std::unique_ptr<Command> make_exact() { return std::make_unique<Exact>(); }
+std::unique_ptr<Command> make_exact_atlas() { return std::make_unique<ExactAtlas>(); }
+
+}  // namespace tripack::commands

@@ -1,0 +1,162 @@
+// The commands on one packing: build (a class member), analyze (a file), draw.
+#include <filesystem>
+#include <memory>
+
+#include "commands/common.hpp"
+#include "formats/formats.hpp"
+#include "pipeline/analyze.hpp"
+#include "pipeline/build.hpp"
+#include "report/diagram.hpp"
+
+namespace tripack::commands {
+
+namespace {
+
+inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
+
+// -o FILE of build and analyze: the format by extension, the coordinates with --digits
+// significant digits (never fewer than a long double's round trip, so no file is rounded).
+WriteOptions file_digits(int digits) {
+  WriteOptions options;
+  options.digits = options.d_digits = std::max(digits, kLongDoubleRoundTripDigits);
+  return options;
+}
+
+// A class member: the class, --k, --p, --variant.
+void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
+  auto& c = o.option("class", member.class_id, "class id (see 'tripack classes')");
+  if (class_required) c.required();
+  o.option("--k", member.k, "class index k");
+  o.option("--p", member.p, "matrix row p").range(1, 1e9);
+  o.option("--variant", member.variant, "variant (e.g. rattler, cavity-1, full)");
+}
+
+class Build : public Command {
+  BuildRequest member{"", kUnsetK, 0, ""};
+  long long n = 0;  // --n: the best builder for n
+  pipeline::BuildSettings settings;
+  std::string output;
+  Output out;
+  Diagrams diagrams;
+
+ public:
+  void declare(OptionList& o) override {
+    declare_member(o, member, false);
+    o.option("--n", n, "number of disks: build the catalogue's best class containing n");
+    settings.declare(o);
+    o.option("-o,--output", output, "write the coordinates (" + format_names() + ", by extension)");
+    out.declare(o, true);
+    diagrams.declare(o);
+  }
+  int run(const Context& c) override {
+    const Catalogue catalogue = load_catalogue(c);
+    // Builds over 2 s show their stage (the LP-free certificate of 4Delta(224) takes 14 s).
+    report::ProgressLine progress(std::cerr, terminal_line("build", out, 2));
+    settings.progress = progress.callback();
+    pipeline::BestBuild result;
+    if (n) {
+      if (!member.class_id.empty() || member.k != kUnsetK || member.p)
+        throw std::invalid_argument("build --n N takes no class, --k or --p");
+      result = pipeline::build_best_for_n(catalogue, n, settings);
+    } else {
+      if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
+      if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
+      result.best = pipeline::build_and_certify(catalogue, member, settings);
+    }
+    progress.finish();
+    print_result(result, out);
+    const PackingRecord& built = result.best.record;
+    if (!output.empty()) write_packing_file(output, built, file_digits(settings.digits));
+    diagrams.draw(built.pattern, pipeline::member_name(built.pattern.provenance), built.forces);
+    return 0;
+  }
+};
+
+class Analyze : public Command {
+  pipeline::AnalyzeRequest request;
+  std::string output;
+  Output out;
+  Diagrams diagrams;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    o.option("-o,--output", output,
+             "write the certified packing (" + format_names() + ", by extension)");
+    out.declare(o, true);
+    diagrams.declare(o);
+  }
+  int run(const Context&) override {
+    report::ProgressLine progress(std::cerr, terminal_line("analyze", out, 2));
+    request.progress = progress.callback();
+    const auto result = pipeline::analyze_file(request);
+    progress.finish();
+    for (const auto& warning : result.warnings)
+      std::cerr << "tripack: warning: " << warning << "\n";
+    print_result(result, out);
+    if (!output.empty())
+      write_packing_file(output, pipeline::record_of(result.analysis),
+                         file_digits(request.digits));
+    diagrams.draw(result.analysis.pattern,
+                  std::filesystem::path(request.file).filename().string(),
+                  result.analysis.stress.forces);
+    return 0;
+  }
+};
+
+class Draw : public Command {
+  std::string what;  // a points file, or a class id
+  BuildRequest member{"", kUnsetK, 0, ""};
+  std::optional<Convention> convention;
+  std::string output;
+  report::DiagramOptions options;
+
+ public:
+  void declare(OptionList& o) override {
+    o.option("what", what, "a points file (any layout of 'analyze') or a class id").required();
+    o.option("--k", member.k, "class index k");
+    o.option("--p", member.p, "matrix row p").range(1, 1e9);
+    o.option("--variant", member.variant, "variant");
+    o.parsed(
+        "--convention", [this](const std::string& s) { convention = convention_from_option(s); },
+        "as the file declares", "of the points file (see analyze)");
+    o.option("-o,--output", output, "the picture: .svg, .png or .pdf").required();
+    o.flag("--forces", options.forces, "bond forces of the stress certificate as line widths");
+    o.flag("!--no-labels", options.disk_labels, "no disk indices");
+    o.option("--width", options.width_pixels, "PNG width in pixels").range(100, 20000);
+  }
+  int run(const Context& c) override {
+    report::Diagram diagram;
+    if (std::filesystem::is_regular_file(what)) {
+      pipeline::AnalyzeRequest request;
+      request.file = what;
+      request.convention = convention;
+      const auto result = pipeline::analyze_file(request);
+      for (const auto& warning : result.warnings)
+        std::cerr << "tripack: warning: " << warning << "\n";
+      diagram = {result.analysis.pattern, std::filesystem::path(what).stem().string(),
+                 format_significant(result.analysis.pattern.packing.d, 15),
+                 result.analysis.stress.forces};
+    } else {
+      if (member.k == kUnsetK)
+        throw std::invalid_argument("draw: '" + what + "' is not a file; a class needs --k K");
+      member.class_id = what;
+      const auto b = pipeline::build_and_certify(load_catalogue(c), member, {});
+      diagram = {b.analysis ? b.analysis->pattern : b.pattern,
+                 pipeline::member_name(b.pattern.provenance),
+                 format_significant(b.pattern.packing.d, 15),
+                 b.analysis ? b.analysis->stress.forces : std::vector<long double>{}};
+    }
+    report::draw_packing(diagram, output, options);
+    std::cout << output << "\n";
+    return 0;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_build() { return std::make_unique<Build>(); }
+std::unique_ptr<Command> make_analyze() { return std::make_unique<Analyze>(); }
+std::unique_ptr<Command> make_draw() { return std::make_unique<Draw>(); }
+
+}  // namespace tripack::commands

@@ -1,0 +1,142 @@
+// The commands that look for packings: billiards, compare, search.
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "commands/common.hpp"
+#include "formats/formats.hpp"
+#include "jobs/billiards_search.hpp"
+#include "jobs/compare.hpp"
+#include "jobs/stored.hpp"
+#include "search/search.hpp"
+
+namespace tripack::commands {
+
+namespace {
+
+// N or --scene, and the runs: what billiards and compare share.
+struct BilliardsRuns {
+  long long n = 0;     // 0: the scene's n
+  std::string scene;   // YAML file; empty: the built-in scene
+  jobs::BilliardsSearch search;
+
+  void declare(OptionList& o) {
+    o.option("N", n, "number of disks (or give --scene)").range(1, 1e7);
+    search.declare(o);
+    o.option("--scene", scene, "scene YAML (container, n, initial state, effects)");
+  }
+  void prepare(const Context& c) {
+    search.scene = scene.empty() ? default_scene(static_cast<int>(n)) : load_scene(scene);
+    jobs::prepare_scene(load_catalogue(c), search.scene, n);
+    search.cancel = c.cancel;
+  }
+};
+
+class Billiards : public Command {
+  BilliardsRuns runs;
+  std::string output_dir;           // -o DIR: one coordinate file per distinct packing
+  std::string file_format = "txt";  // of those files
+  Output out;
+  Diagrams diagrams;
+
+ public:
+  void declare(OptionList& o) override {
+    runs.declare(o);
+    o.flag("!--no-certify", runs.search.certify,
+           "skip relax/bonds/rigidity/stress of the end states");
+    o.option("-o,--output", output_dir,
+             "directory: one coordinate file per distinct packing, named by its label");
+    o.option("--format", file_format, "format of those files: " + format_names());
+    out.declare(o, true);
+    diagrams.declare(o);  // the best packing found
+  }
+  int run(const Context& c) override {
+    if (runs.n == 0 && runs.scene.empty())
+      throw std::invalid_argument("billiards needs N or --scene FILE");
+    // -o DIR is checked before the runs (a search must not end in an unwritable directory).
+    const PackingFormat& format = format_named(file_format, "--format");
+    const auto dir = output_dir.empty() ? std::filesystem::path() : writable_directory(output_dir);
+    runs.prepare(c);
+    report::ProgressLine progress(
+        std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
+    runs.search.progress = progress.callback();
+    const auto result = jobs::search_billiards(runs.search);
+    progress.finish();
+    // Files first: what was found is kept even if printing fails.
+    if (!dir.empty())
+      for (const auto& x : result.packings)
+        write_packing_file((dir / (x.label + format.extensions.front())).string(), x, {});
+    print_result(result, out);
+    if (!result.packings.empty()) {
+      const auto& best = result.packings.front();
+      diagrams.draw(best.pattern, best.label, best.forces);
+    }
+    return result.cancelled() ? cancelled("the result holds the runs that finished") : 0;
+  }
+};
+
+class Compare : public Command {
+  BilliardsRuns runs;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    runs.declare(o);
+    out.declare(o, true);
+  }
+  int run(const Context& c) override {
+    if (runs.n < 2) throw std::invalid_argument("compare needs N >= 2");
+    const Catalogue catalogue = load_catalogue(c);
+    runs.prepare(c);
+    report::ProgressLine progress(
+        std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
+    runs.search.progress = progress.callback();
+    const auto result = jobs::compare_constructed(catalogue, runs.n, runs.search, {});
+    progress.finish();
+    print_result(result, out);
+    return result.billiards.cancelled() ? cancelled("the comparison holds the runs that finished")
+                                        : 0;
+  }
+};
+
+class Search : public Command {
+  search::SearchRequest request;
+  std::string db;  // empty: start from nothing stored, record nothing
+  Output out;
+  Diagrams diagrams;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    o.option("--db", db,
+             "campaign database: continue from its best packings of N and record every chain "
+             "as a unit (N, seed)");
+    out.declare(o, true);
+    diagrams.declare(o);
+  }
+  int run(const Context& c) override {
+    request.cancel = c.cancel;
+    report::ProgressLine progress(std::cerr,
+                                  terminal_line(fmt::format("search n={}", request.n), out));
+    request.progress = progress.callback();
+    const auto result = jobs::search_and_record(request, db, tool_version());
+    progress.finish();
+    for (const auto& note : result.notes) std::cerr << "tripack: note: " << note << "\n";
+    print_result(result.search, out);
+    if (!result.search.packings.empty()) {
+      const auto& best = result.search.packings.front();
+      diagrams.draw(best.pattern, best.label, best.forces);
+    }
+    return result.search.cancelled ? cancelled("the result holds the steps that finished") : 0;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Command> make_billiards() { return std::make_unique<Billiards>(); }
+std::unique_ptr<Command> make_compare() { return std::make_unique<Compare>(); }
+std::unique_ptr<Command> make_search() { return std::make_unique<Search>(); }
+
+}  // namespace tripack::commands
