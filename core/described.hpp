@@ -10,6 +10,7 @@
 namespace tripack {
 
 struct Described {
+  explicit Described(std::string what) : title(std::move(what)) {}
   struct Field {
     std::string name, value;
     bool number = false;  // JSON: a number, not a string

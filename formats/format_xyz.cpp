@@ -1,6 +1,8 @@
 // Extended XYZ: the disks as particles of radius d/2 in the plane z = 0, with a rattler flag, in
-// the unit-triangle convention. OVITO and VMD read it ("Properties=" names the columns; the
-// triangle's corners are in the comment line, since the container is not periodic).
+// the unit-triangle convention. OVITO, VMD and ASE read it ("Properties=" names the columns; the
+// triangle's corners are in the comment line, since the container is not periodic). Every disk's
+// species is X, ASE's dummy element (ASE refuses names that are not elements); the rattler
+// column tells rattlers apart.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -27,7 +29,7 @@ void write_extended_xyz(std::ostream& out, const PackingRecord& record,
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string x = precise.empty() ? format_significant(points[i].x, digits) : precise[i][0];
     const std::string y = precise.empty() ? format_significant(points[i].y, digits) : precise[i][1];
-    out << (rattler[i] ? "R" : "D") << ' ' << x << ' ' << y << " 0 " << radius << ' '
+    out << "X " << x << ' ' << y << " 0 " << radius << ' '
         << int(rattler[i]) << "\n";
   }
 }

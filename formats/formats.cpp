@@ -71,6 +71,10 @@ void records_writer(std::ostream& out, const PackingRecord& r, const WriteOption
 
 }  // namespace
 
+// Formats in files of their own.
+void write_extended_xyz(std::ostream& out, const PackingRecord& record,
+                        const WriteOptions& options);  // formats/format_xyz.cpp
+
 const std::vector<PackingFormat>& packing_formats() {
   static const std::vector<PackingFormat> formats{
       {"txt", {".txt"}, read_text_points, text_writer, "x y lines under a # header"},

@@ -1,6 +1,7 @@
 // The one table of packing-file formats (docs/formats.md): name, extensions, reader, writer. A
-// new format is its file (a writer, and a reader if it can be read) plus one line in
-// packing_formats(); every command that reads or writes packing files goes through this table.
+// new format is its file in formats/ (a writer, and a reader if it can be read) plus its line in
+// packing_formats() (formats/formats.cpp); every reader and writer of packing files goes through
+// this table, and the help lists the formats from it.
 #pragma once
 
 #include <iosfwd>
@@ -49,9 +50,5 @@ void write_packing_file(const std::string& path, const PackingRecord& record,
 // triangle: its MPFR digits (rounded) when it has them and more than a long double's are asked
 // for, else long double's. Empty when the request needs nothing beyond long double.
 PrecisePoints coordinates_beyond_long_double(const PackingRecord& record, int digits);
-
-// Extended XYZ (core/format_xyz.cpp): what OVITO and VMD open.
-void write_extended_xyz(std::ostream& out, const PackingRecord& record,
-                        const WriteOptions& options);
 
 }  // namespace tripack

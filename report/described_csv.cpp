@@ -8,9 +8,13 @@ namespace tripack::report {
 // CSV: a header of the field names, one row of values.
 void write_described_csv(std::ostream& out, const Described& result) {
   std::string header, row;
-  for (const auto& f : result.fields) {
-    header += (header.empty() ? "" : ",") + csv_field(f.name);
-    row += (row.empty() ? "" : ",") + csv_field(f.value);
+  for (std::size_t i = 0; i < result.fields.size(); ++i) {
+    if (i > 0) {
+      header += ',';
+      row += ',';
+    }
+    header += csv_field(result.fields[i].name);
+    row += csv_field(result.fields[i].value);
   }
   out << header << "\n" << row << "\n";
 }

@@ -27,6 +27,7 @@ PKGS=(
   libflint-arb-dev     # exact d(n): ball arithmetic for root isolation and the embedding checks
   libfplll-dev         # exact d(n): the LLL of integer relations (5x FLINT's at degree 64, 4,000 digits)
   pari-gp              # the independent checker of exact certificates (checker/, shares no code)
+  python3-ase          # a real client of the field reads our extended XYZ back in the tests (ASE, as OVITO users script)
 )
 missing=()
 for p in "${PKGS[@]}"; do
