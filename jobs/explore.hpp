@@ -47,6 +47,7 @@ struct ExploreSettings {
         .range(2, 100000);
     o.option("--search-steps", search_steps, "basin-hopping steps per chain for each n <= 60")
         .range(1, 1e8);
+    o.option("--billiards-max-n", billiards_max_n, "search every n = 2 .. this").range(2, 100000);
     o.option("--threads", threads, "parallel runs").range(1, 256);
     o.option("--seed", seed, "seed of run 0 (run r uses seed + r)");
     o.flag("!--no-accuracy", accuracy, "skip the accuracy-against-time study (~20 s)");
