@@ -42,7 +42,7 @@ struct StressReport {
 StressReport stress_certificate(const Packing& packing, const std::vector<Bond>& bonds,
                                 const std::vector<int>& rattlers);
 
-// Fast path for both certificates (issue 10), linear algebra instead of LPs. With G the
+// Fast path for both certificates, linear algebra instead of LPs. With G the
 // bond-opening map over the non-rattlers and A = G^T G:
 //  * a sparse LDL^T of A with positive pivots, and an inverse-iteration estimate of its smallest
 //    eigenvalue above `min_eigenvalue`, say G has full column rank: no motion keeps every bond

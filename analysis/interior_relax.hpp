@@ -1,4 +1,4 @@
-// Interior-point relax (issue 10): the local maximum of the minimum distance near a start, in
+// Interior-point relax: the local maximum of the minimum distance near a start, in
 // near-linear time, for the states relax's linear programs are slow on (billiards end states:
 // their step LPs are massively degenerate; CLP's simplex needs ~30 s per LP at n = 2000).
 //

@@ -1,4 +1,4 @@
-// Time of every analysis stage against n (issue: the whole certify pipeline for n = 254 under
+// Time of every analysis stage against n (the goal: the whole certify pipeline for n = 254 under
 // 1 s; 50 digits for n = 254 under 5 s). Patterns: Delta(2p)+1 for p = 3, 6, 11, 22
 // (n = 22, 79, 254, 991). Run: build/bench/bench_analysis
 #include <benchmark/benchmark.h>
@@ -119,20 +119,20 @@ void certify_counting_stages(benchmark::State& s, const Packing& start, bool by_
   set_n(s, start.size());
 }
 
-// Issue 10: the whole analysis from the built state (the fast certificate's case), at n = 991,
+// The whole analysis from the built state (the fast certificate's case), at n = 991,
 // 5051, 10154 and 100577 (Delta(2p)+1 for p = 22, 50, 71, 224).
 void BM_CertifyBuilt(benchmark::State& s) {
   certify_counting_stages(s, ripple(s.range(0)).packing, false);
 }
 
-// Issue 10: the same patterns with every coordinate moved by up to 1e-6 d: no optimum, so the
+// The same patterns with every coordinate moved by up to 1e-6 d: no optimum, so the
 // start does not certify; the interior-point relax brings it back and the LP-free certificate
 // proves the result (no LP at any size).
 void BM_CertifyPerturbed(benchmark::State& s) {
   certify_counting_stages(s, noisy(ripple(s.range(0)).packing, 1e-6L), true);
 }
 
-// Issue 10: 4Delta(k) with 10^5 disks (k = 224, n = 100,800), built (second argument 0), then
+// 4Delta(k) with 10^5 disks (k = 224, n = 100,800), built (second argument 0), then
 // perturbed by 1e-6 d (1).
 void BM_CertifyFourDelta(benchmark::State& s) {
   const Packing built = build_four_delta(s.range(0)).packing;
@@ -149,7 +149,7 @@ BENCHMARK(BM_CertifyFourDelta)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
 
-// Issue 10: a billiards end state (default scene, seed 1): near contacts everywhere, rattlers,
+// A billiards end state (default scene, seed 1): near contacts everywhere, rattlers,
 // an imperfect jam; the fast path rarely applies and the LPs decide.
 void BM_AnalyzeBilliardsEndState(benchmark::State& s) {
   const int n = static_cast<int>(s.range(0));

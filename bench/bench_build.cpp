@@ -1,4 +1,4 @@
-// Build and polish time against n (issue: 10^6 disks built in < 1 s; polish of n ~ 10^4 in < 2 s).
+// Build and polish time against n (the goals: 10^6 disks built in < 1 s; polish of n ~ 10^4 in < 2 s).
 // Run: build/bench/bench_build --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 

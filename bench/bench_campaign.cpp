@@ -1,4 +1,4 @@
-// The campaign database's cost per run (issue 11): one ResultsDb::record (one BEGIN IMMEDIATE
+// The campaign database's cost per run: one ResultsDb::record (one BEGIN IMMEDIATE
 // transaction in WAL mode, synchronous=NORMAL) against the work unit it records (a default-scene
 // billiards run and its analysis), at n = 22 and 100. Throughput of whole campaigns (threads,
 // mpirun) is bench/campaign_throughput.sh. Run: build/bench/bench_campaign
@@ -19,7 +19,7 @@
 namespace tripack {
 namespace {
 
-// A unit as the campaign runs it (campaign/campaign.cpp run_unit): billiards from seed, analysis.
+// A unit as the campaign runs it (jobs/campaign.cpp run_unit): billiards from seed, analysis.
 store::RunRecord run_unit(int n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   const BilliardsResult sim = run_billiards(default_scene(n), rng);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Campaign throughput (issue 11): runs per second of `tripack campaign` at one n, on 1 and 2
+# Campaign throughput: runs per second of `tripack campaign` at one n, on 1 and 2
 # threads and under mpirun (2 ranks, rank 0 computing on one thread; 3 ranks, rank 0 only handing
 # out), the same seeds for every configuration (deterministic work), a fresh database each time.
 # Wall time of the whole command (process and MPI start-up included); the median of REPS runs,

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Hit rates of billiards growth protocols against n (docs/performance.md, "Billiards defaults
-# against n (issue 9)"). Not a test: the full table takes about 20-30 minutes on 2 cores.
+# against n"). Not a test: the full table takes about 20-30 minutes on 2 cores.
 #
 # For each (n, protocol) cell: `tripack billiards N --scene S --runs R --threads T --json` from
 # seed 1 (run r uses seed 1 + r, so hit counts are deterministic); a run hits when it is certified

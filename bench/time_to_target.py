@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time to target (issue 21): CPU seconds until the atlas's best d of n is first reached, by
+"""Time to target: CPU seconds until the atlas's best d of n is first reached, by
 `tripack search` (basin hopping) and by independent default billiards runs (`--method restarts`),
 the same binary, one thread each, the two methods interleaved seed by seed in one run. A chain
 that has not reached the target within the cap counts as the CPU seconds it spent (a lower
@@ -45,7 +45,7 @@ def median_of(ms, cap):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--tripack", default="build/tripack")
-    # The targets: the atlas's best before this issue's searches (commit 279e5c0), so that a
+    # The targets: the atlas's best before the search's own campaigns (commit 279e5c0), so that a
     # search that finds a denser packing counts as reaching it.
     ap.add_argument("--atlas", default="bench/results/time-to-target-targets.csv")
     ap.add_argument("--n", default=DEFAULT_N)

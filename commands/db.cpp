@@ -90,6 +90,7 @@ class DbImport : public Command {
     request.progress = progress.callback();
     const auto result = jobs::import_packings(request);
     progress.finish();
+    if (result.cancelled) return cancelled("nothing was stored");
     for (const auto& x : result.packings)
       for (const auto& warning : x.warnings)
         std::cerr << "tripack: warning: " << x.file << ": " << warning << "\n";

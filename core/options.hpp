@@ -1,5 +1,5 @@
 // Options declared once, next to the fields they set (docs/extending.md "An option"): a request's
-// declare(OptionList&) names each option with its help; the command line (app/cli.cpp) binds it
+// declare(OptionList&) names each option with its help; the command line (app/main.cpp) binds it
 // to the field and shows the field's initial value as the default. Core knows no CLI library.
 #pragma once
 

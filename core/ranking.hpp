@@ -36,7 +36,7 @@ std::vector<std::size_t> label_order(const std::vector<RankKey>& keys,
 // record now at position r was records[order[r]].
 std::vector<std::size_t> rank_records(long long n, std::vector<PackingRecord>& records);
 
-// Sets each record's d_confirmations (issue 21): the own_confirmations() of every record of the
+// Sets each record's d_confirmations: the own_confirmations() of every record of the
 // list (one n) whose d agrees with its own to kSameValueTolerance, itself included.
 void count_value_confirmations(std::vector<PackingRecord>& records);
 

@@ -33,7 +33,7 @@ struct PackingSource {
 
 // What "the same packing" means everywhere (docs/certified.md, "Identity"): the same n, the same
 // contact graph up to the triangle's 6 symmetries and relabelling (a colour-refinement hash,
-// analysis/identity.hpp) and d to kIdentityDigits significant digits.
+// analysis/compare.hpp identify) and d to kIdentityDigits significant digits.
 inline constexpr int kIdentityDigits = 12;
 // d agreeing to this relative tolerance is "the same d" (identity and ranking).
 inline constexpr long double kSameDTolerance = 1e-12L;
@@ -55,7 +55,7 @@ struct PackingRecord {
   bool certified = false;
   std::string verdict;              // the certificate's one-line verdict
   std::vector<long double> forces;  // the stress certificate's, per bond
-  std::string graph_hash;           // identity (analysis/identity.hpp fills it)
+  std::string graph_hash;           // identity (analysis/compare.hpp identify fills it)
   std::vector<PackingSource> sources;
   std::string label;     // among the packings of its n (core/ranking.hpp): t22a, t17a40, ...
   std::size_t rank = 0;  // 1 = the best of its n in its list
@@ -75,14 +75,14 @@ struct PackingRecord {
   std::uint64_t first_seed() const;
   bool has_seed() const { return first_seed() != std::numeric_limits<std::uint64_t>::max(); }
   long long runs() const;  // billiards runs over every source
-  // The independent searches that reached it (issue 21): independent billiards runs and search
+  // The independent searches that reached it: independent billiards runs and search
   // chains, plus one when a builder gives it; a table's count as read back.
   long long own_confirmations() const;
   // d_confirmations when the atlas has set it, else own_confirmations().
   long long confirmations() const {
     return d_confirmations >= 0 ? d_confirmations : own_confirmations();
   }
-  // The atlas's count (issue 21): the confirmations of every packing of this n whose d agrees
+  // The atlas's count: the confirmations of every packing of this n whose d agrees
   // with this one's (kSameValueTolerance), summed. It confirms the value d(n), which distinct
   // packings often share (Delta(k) - 1 with its vacancy anywhere, or a loose contact made or
   // not). -1: not set.
@@ -97,7 +97,7 @@ struct PackingRecord {
   void merge_sources(const PackingRecord& other);
 };
 
-// The same packing: the same n and contact graph (graph_hash, set by analysis/identity.hpp) and d
+// The same packing: the same n and contact graph (graph_hash, set by analysis/compare.hpp identify) and d
 // within kSameDTolerance, or the same PackingKey (d equal to kIdentityDigits digits).
 bool same_packing(const PackingRecord& a, const PackingRecord& b);
 // The rule itself, on what it reads (for a store that keeps rows, not records).

@@ -1,4 +1,4 @@
-// The atlas (issue 12): for every n of a range, the best certified packings known here, merged
+// The atlas: for every n of a range, the best certified packings known here, merged
 // from a campaign's database and every catalogue builder whose class contains n, each certified
 // anew from its coordinates and polished in MPFR to 30 digits. The atlas is data (data/atlas.csv
 // and one coordinates file per row, written by report/atlas_report.hpp) that anyone can check.

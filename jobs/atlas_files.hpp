@@ -1,4 +1,4 @@
-// The atlas on disk (issue 12): DIR/atlas.csv with the columns
+// The atlas on disk: DIR/atlas.csv with the columns
 //   n, rank, label, d, L, delta, bonds, rattlers, certified, confirmations, source, file
 // (d and L as strings with the polish's significant digits, delta with L's decimals) and one
 // coordinates file per row, DIR/atlas/<label>.txt: `x y` lines in the unit triangle with the

@@ -1,4 +1,4 @@
-// The explorer (`tripack explore`, issue 9): every class member up to max_n built and certified,
+// The explorer (`tripack explore`): every class member up to max_n built and certified,
 // billiards searches for small n, class members and the matrix stress set, the two compared, and
 // the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
 // report directory. Every stage runs on the job runner (runner/runner.hpp) and stops between items

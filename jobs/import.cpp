@@ -93,8 +93,12 @@ ImportResult import_packings(const ImportRequest& request) {
     const Progress p = counter.finished(request.files[i]);
     if (request.progress) request.progress(p);
   };
-  if (ThreadExecutor(request.threads).run_items(items, request.cancel).cancelled)
-    throw ImportError("interrupted: nothing was stored");
+  if (ThreadExecutor(request.threads).run_items(items, request.cancel).cancelled) {
+    ImportResult cancelled;
+    cancelled.db = request.db;
+    cancelled.cancelled = true;
+    return cancelled;
+  }
   store::ResultsDb db = store::ResultsDb::open(request.db);
   const std::vector<store::AddOutcome> outcomes = db.add_packings(stored);
   for (std::size_t i = 0; i < outcomes.size(); ++i) {

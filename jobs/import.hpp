@@ -1,4 +1,4 @@
-// `tripack db import` (issue 11): packing files into the results database. Each file is read like
+// `tripack db import`: packing files into the results database. Each file is read like
 // `tripack analyze` reads it (core/io + core/points: every layout, the three conventions), checked
 // for overlapping disks, analysed by the same pipeline (pipeline::analyze_packing: relax, bonds,
 // rattlers, rigidity, stress) and, when certified, stored with its contact-graph hash, bonds,
@@ -72,6 +72,7 @@ struct ImportResult {
   std::string db;
   std::vector<ImportedPacking> packings;  // in the order of the files
   long long added = 0, already = 0;
+  bool cancelled = false;  // then nothing was stored
   double seconds = 0;
 };
 

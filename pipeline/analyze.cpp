@@ -80,7 +80,7 @@ long double smallest_gap(const Pattern& pat) {
   return g.empty() ? std::numeric_limits<long double>::infinity() : g.front().gap;
 }
 
-// Relax fast path (issue 10). If the start, with the contacts it has within 1e-6 d polished
+// Relax fast path. If the start, with the contacts it has within 1e-6 d polished
 // shut, is rigid with a strictly positive stress f and every other gap is open, it is a strict
 // local maximum of d and relax has nothing to gain: its step LP maximizes g subject to
 // u_ij.(yi - yj) >= g for the contact pairs (and n.yi >= 0 for the wall contacts, among other

@@ -32,7 +32,7 @@ struct BuildSettings {
 
 // Above this many disks certification is skipped (reported as skipped). With the fast certificate
 // (README "What certified means" step 5) 4Delta(224), n = 100,800, certifies in 14 s and 0.7 GB;
-// a member on which the fast path declines falls back to LPs that do not scale (issue 10).
+// a member on which the fast path declines falls back to LPs that do not scale.
 inline constexpr std::size_t kCertifyLimit = 120000;
 
 // The whole pipeline on a class member: construct, polish the builder's bond system, verify

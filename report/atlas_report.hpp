@@ -1,5 +1,5 @@
-// Renderers of `tripack atlas` (issue 12): a line per n (its best row), the builders below the
-// best, the errors; JSON with every row; CSV = atlas.csv's table (campaign/atlas_files.hpp holds
+// Renderers of `tripack atlas`: a line per n (its best row), the builders below the
+// best, the errors; JSON with every row; CSV = atlas.csv's table (jobs/atlas_files.hpp holds
 // the files' format).
 #pragma once
 

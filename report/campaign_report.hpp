@@ -1,4 +1,4 @@
-// Renderers of the campaign's and the database commands' results (issue 11), one function per
+// Renderers of the campaign's and the database commands' results, one function per
 // format like every other command's (report/render.hpp, whose render() dispatches to these; JSON
 // conventions there: high-precision numbers as strings, `seconds`, errors as {"error": ...}):
 //  * `tripack campaign`: CampaignReport (the run's counts and the best of every n in its range);
@@ -6,7 +6,7 @@
 //  * `tripack db check`: jobs::DbCheck;
 //  * `tripack db import`: jobs::ImportResult;
 //  * `tripack db prune`: jobs::PruneResult.
-// `tripack db export` writes packing files (report/formats.hpp), not a rendering.
+// `tripack db export` writes packing files (formats/formats.hpp), not a rendering.
 #pragma once
 
 #include <iosfwd>

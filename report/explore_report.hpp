@@ -1,4 +1,4 @@
-// The explorer's report directory (issue 9): data first (CSV, JSON, coordinate files), then the
+// The explorer's report directory: data first (CSV, JSON, coordinate files), then the
 // pictures (Cairo diagrams, gnuplot plots), then index.html, which is written last so that a
 // page on disk always describes files that exist. Works from a partial (interrupted) result too.
 #pragma once
@@ -16,7 +16,7 @@
 
 namespace tripack::report {
 
-// The atlas (data/atlas.csv, issue 12) shown beside the exploration: its best packing of every n
+// The atlas (data/atlas.csv) shown beside the exploration: its best packing of every n
 // in the delta(n) plot (grey dots), a table, a diagram per n, the n where it beats every
 // builder; its table and files are copied into DIR/atlas/ so the report stays self-contained.
 struct ExploreAtlas {

@@ -1,4 +1,4 @@
-// The MPI executor's logic, apart from the MPI calls (jobs/ranks_mpi.cpp), so it is compiled and
+// The MPI executor's logic, apart from the MPI calls (runner/ranks_mpi.cpp), so it is compiled and
 // linked the same way with or without MPI.
 #include <fmt/format.h>
 

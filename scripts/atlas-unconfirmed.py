@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes data/atlas-unconfirmed.csv (issue 21): every n whose rank-1 row in data/atlas.csv has
+"""Writes data/atlas-unconfirmed.csv: every n whose rank-1 row in data/atlas.csv has
 fewer than 3 confirmations, with why, from data/atlas.csv and the runs table of data/atlas.db:
 how many independent units ran at n (billiards runs and search chains from random starts;
 continued searches do not count) and what reached the best.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the atlas (issue 12): billiards campaigns into data/atlas.db, then `tripack atlas`,
+# Regenerates the atlas: billiards campaigns into data/atlas.db, then `tripack atlas`,
 # which merges them with every builder, certifies and polishes each row to 30 digits and writes
 # data/atlas.csv, data/atlas/*.txt and data/atlas-gaps.csv; and the matrix stress set into
 # data/stress.db and data/stress/. Every campaign is resumable: rerunning this script skips every
@@ -64,7 +64,7 @@ for s in "${steps[@]}"; do
       step prune-small "$T" db prune --keep 30 --n 2..34 --db "$DB"
       step prune-large "$T" db prune --keep 5 --n 35..100000 --db "$DB"
       step prune-stress "$T" db prune --keep 5 --db data/stress.db ;;
-    confirm)  # issue 21: fresh searches from random starts (`campaign --search-seconds`) at every
+    confirm)  # Fresh searches from random starts (`campaign --search-seconds`) at every
       # n = 35..200 (n <= 34 have 2000 runs each), then 4 of 20 s wherever the atlas's best has
       # fewer than 3 confirmations. Seeds of their own (10001.., 20001..): a chain's first seconds
       # are those of the chain of the same seed with a longer budget, so seeds are never reused.

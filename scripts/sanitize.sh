@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sanitizer builds of tripack and the tests that exercise them (issue 11).
+# Sanitizer builds of tripack and the tests that exercise them.
 #   bash scripts/sanitize.sh [tsan|asan|all]   # default all (tsan, then asan)
 # tsan: configures the project into build-tsan/ with -fsanitize=thread (-O1 -g), builds
 #       tripack_tests and tripack, and runs the threaded tests (the threaded billiards searches,

@@ -1,4 +1,4 @@
-// `tripack search` (issue 21): a search for the densest packing of n disks that learns from what
+// `tripack search`: a search for the densest packing of n disks that learns from what
 // it finds, with a time budget. Monotonic basin hopping on a small population (docs/search.md):
 // half the steps perturb a member (shrink and regrow by billiards, or move its loosest disk to
 // the largest hole) and keep the result when it is not worse; the other half are fresh starts

@@ -141,7 +141,7 @@ void read_initial(const YAML::Node& node, const std::string& base_dir, Scene& s)
 }  // namespace
 
 // The default growth protocol against n, chosen from the hit-rate table of docs/performance.md
-// ("Billiards defaults against n (issue 9)", bench/hit_rates.sh): the fraction of runs from random
+// ("Billiards defaults against n", bench/hit_rates.sh): the fraction of runs from random
 // starts that jam in the best known packing, and the CPU time per hit. Constant 0.01 is good at
 // small n (t22a in 27% of runs, 0.04 s per hit) but fails at large n (t254a in 0 of 64 runs;
 // slower constant rates hit it at 6.5 s per hit). What matters is the rate while the estimated

@@ -90,7 +90,7 @@ struct Scene {
 
 // Built-in scene: n random disks, thermostat every 10 n collisions, stop at a gap of 1e-12, growth
 // at rate 0.01, slowed to default_window_rate(n) while the estimated gap is in [0.01, 0.1) when
-// n > 40 (the hit-rate table of docs/performance.md, issue 9: at n = 254 constant 0.01 reached
+// n > 40 (the hit-rate table of docs/performance.md: at n = 254 constant 0.01 reached
 // t254a in 0 of 64 runs, this default in 19 of 32). For n <= 40 it is constant 0.01.
 Scene default_scene(int n);
 inline constexpr double kDefaultGrowthRate = 0.01;

@@ -1,4 +1,4 @@
-// The campaign results database (docs/campaigns.md, issue 11): SQLite in WAL mode. Every finished
+// The campaign results database (docs/campaigns.md): SQLite in WAL mode. Every finished
 // work unit (n, seed) is one transaction (BEGIN IMMEDIATE) holding the run and, when new for its n,
 // the packing it found; so a killed campaign loses at most the unit it was running, and a rerun
 // skips every unit already recorded. Errors are StoreError with one line naming the file.
@@ -18,10 +18,10 @@ struct sqlite3;
 
 namespace tripack::store {
 
-// Version 2 (issue 11, db import): packings record where they came from (origin "campaign" or
+// Version 2 (db import): packings record where they came from (origin "campaign" or
 // "import", source = the imported file's name) and imported ones have no seed (first_seed NULL).
 // A version-1 file is migrated in place when opened (one transaction; every row kept).
-// Version 3 (issue 21, search): a run has a method ("billiards", or "search S s" for a search
+// Version 3 (search): a run has a method ("billiards", or "search S s" for a search
 // chain of S seconds) and a unit is (n, seed, method). Older files are migrated in place.
 inline constexpr int kSchemaVersion = 3;
 

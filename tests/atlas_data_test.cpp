@@ -1,4 +1,4 @@
-// An independent check of the committed atlas (issue 12): data/atlas.csv and every coordinates
+// An independent check of the committed atlas: data/atlas.csv and every coordinates
 // file it names are re-read here with a parser of this file's own and checked in MPFR, without
 // any tripack code (this program links only MPFR and GoogleTest). For every row: the file holds n
 // points in the triangle (0,0), (1,0), (1/2, sqrt3/2), and their minimum distance equals the row's
@@ -166,7 +166,7 @@ TEST(AtlasData, EveryNFrom2To200HasACertifiedBestRowWithItsFile) {
   }
 }
 
-// Issue 21: every best of n = 2..200 was reached by at least 3 independent searches (a builder
+// Every best of n = 2..200 was reached by at least 3 independent searches (a builder
 // counts as one), or data/atlas-unconfirmed.csv (`n,why`) names it with the reason; a listed n
 // must really be below 3, so the list cannot outlive the data.
 TEST(AtlasData, EveryBestIsConfirmedThreeTimesOrSaysWhyNot) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Soak test of the campaign database (issue 11): start a campaign, SIGKILL it at a random moment,
+# Soak test of the campaign database: start a campaign, SIGKILL it at a random moment,
 # check the database with an independent reader (the sqlite3 command), repeat; then let the
 # rerun finish. After every kill the database must open, pass PRAGMA integrity_check, hold every
 # unit the campaign had logged as recorded before the kill, and hold no unit twice; the final

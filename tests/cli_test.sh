@@ -268,7 +268,7 @@ printf 'n: 10\neffects:\n  growth: {rate: 0.01}\n' >"${TMPDIR:-/tmp}/tripack_no_
 expect_error "growth without thermostat" "growth needs a thermostat" billiards --scene "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 rm -f "${TMPDIR:-/tmp}/tripack_no_thermostat.yaml"
 
-# Campaigns (issue 11): a small campaign, its rerun (nothing repeated), db best, bad input.
+# Campaigns: a small campaign, its rerun (nothing repeated), db best, bad input.
 cdb="${TMPDIR:-/tmp}/tripack_cli_campaign_$$.db"
 rm -f "$cdb" "$cdb-wal" "$cdb-shm"
 expect_output "campaign records units" "6 recorded now" campaign --n 10..11 --runs 3 --threads 2 --db "$cdb"
@@ -396,7 +396,7 @@ rm -rf "$rodir"
 rm -rf "$ctmp"
 rm -f "$cdb" "$cdb-wal" "$cdb-shm" "$cdb.txt"
 
-# search (issue 21): the JSON a program reads; one seed, one thread and a step budget print the
+# search: the JSON a program reads; one seed, one thread and a step budget print the
 # same packings twice; --db records each chain once as a unit (n, seed, "search S s").
 sdb=$(mktemp -u /tmp/tripack-search-XXXX.db)
 out1=$("$TRIPACK" search 12 --steps 15 --seed 4 --json 2>/dev/null)
@@ -437,7 +437,7 @@ expect_error "search with an unknown method" "--method must be one of basin-hopp
 expect_error "search with a bad target" "--target must be a positive decimal" search 12 --target 0.2x
 expect_error "search of one disk" "N: Value 1 not in range" search 1
 
-# Progress (issue 10): on a terminal (script(1) gives the command a pty), a stage running over 2 s
+# Progress: on a terminal (script(1) gives the command a pty), a stage running over 2 s
 # shows a live line with the stage; a quick command shows none.
 if command -v script >/dev/null; then
   slow=$(script -qec "$TRIPACK build four-delta --k 150" /dev/null)

@@ -52,7 +52,7 @@ check "DOM has the delta plot" grep -q '<img src="delta.svg"' "$tmp/dom.html"
 rows=$(grep -c '<a href="packings/' "$tmp/dom.html")
 csv_rows=$(($(wc -l <"$tmp/report/packings.csv") - 1))
 check "DOM lists every packing ($rows vs $csv_rows)" [ "$rows" -eq "$csv_rows" ]
-# The atlas (issue 12; the project's data/atlas.csv, shown by default): its best row of every n
+# The atlas (the project's data/atlas.csv, shown by default): its best row of every n
 # in the page with a diagram, its table and files copied, the tight/loose table.
 atlas_csv="$(dirname "$0")/../data/atlas.csv"
 if [ -f "$atlas_csv" ]; then

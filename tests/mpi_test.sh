@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Campaigns under mpirun (issue 11): the same units give the same database as threads, with rank
+# Campaigns under mpirun: the same units give the same database as threads, with rank
 # 0 computing or only handing out; a worker rank killed mid-campaign loses nothing recorded and
 # the rerun completes the rest. Usage: mpi_test.sh path/to/tripack
 set -u

@@ -384,7 +384,7 @@ TEST(Billiards, GrowthScheduleChangesTheRate) {
   EXPECT_EQ(q.growth_rate, 0.01);
 }
 
-// The built-in growth against n (docs/performance.md, "Billiards defaults against n (issue 9)"):
+// The built-in growth against n (docs/performance.md, "Billiards defaults against n"):
 // up to n = 40 the old constant 0.01 (small n keep their cost per run); beyond, 0.01 except while
 // the estimated gap is in [0.01, 0.1), where the disks order, at a rate that falls with n, about
 // 1e-3 at n = 79 and 1e-4 at n = 254 (where constant 0.01 never reached t254a in 64 runs), and

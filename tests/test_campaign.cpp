@@ -1,4 +1,4 @@
-// campaign/: work units over threads into the results database (issue 11).
+// campaign/: work units over threads into the results database.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -203,7 +203,7 @@ TEST(ExactCheck, ThrowsWithoutExactData) {
 }
 
 TEST(ExactCheck, TimeForFourDelta20And100) {
-  // Reported in the issue: exact_check of 4Delta(20) (n = 840) and 4Delta(100) (n = 20,200).
+  // Once slow: exact_check of 4Delta(20) (n = 840) and 4Delta(100) (n = 20,200).
   for (long k : {20L, 100L}) {
     const Pattern pat = build_four_delta(k);
     const auto t0 = std::chrono::steady_clock::now();

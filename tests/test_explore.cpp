@@ -1,4 +1,4 @@
-// The explorer's data (issue 9): the values behind the delta(n) plot against closed forms, and
+// The explorer's data: the values behind the delta(n) plot against closed forms, and
 // every written packing file re-analysed passes the certificate its row claims.
 #include <gtest/gtest.h>
 

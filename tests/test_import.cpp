@@ -1,4 +1,4 @@
-// campaign/import and campaign/stored (issue 11): `tripack db import` and `db export`. Export and
+// campaign/import and campaign/stored: `tripack db import` and `db export`. Export and
 // import are inverse (same d to the 18 stored digits, same contact-graph hash, no duplicate
 // row); every format and convention reads back through the file reader; built class members
 // certify on import with their closed-form d; overlapping, malformed and uncertified files are

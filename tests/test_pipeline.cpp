@@ -76,7 +76,7 @@ TEST(Pipeline, AnalyzeOfBuildFindsTheBuildersBondsAndCertifiesEveryClass) {
 }
 
 TEST(Pipeline, ABuiltOptimumSkipsTheRelaxLPAndAMissingContactDoesNot) {
-  // Issue 10: the built state certifies without LPs (relax's fast path) ...
+  // The built state certifies without LPs (relax's fast path) ...
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 3, 0, ""});
   const Analysis fast = analyze_packing(built.packing, {});
   EXPECT_TRUE(fast.relax.fast_path);
@@ -117,7 +117,7 @@ Packing perturbed(const Packing& pk, long double amplitude, std::uint64_t seed) 
 }
 
 TEST(Pipeline, InteriorRelaxRecoversAPerturbedPatternWithoutLPs) {
-  // Issue 10: even-ripple k = 6 (n = 79) with every coordinate moved by up to 1e-5 d is no
+  // Even-ripple k = 6 (n = 79) with every coordinate moved by up to 1e-5 d is no
   // optimum; the interior-point relax brings it back to the built packing, which then certifies
   // without any LP: same bonds, d equal to the builder's (its closed form) to 1e-14.
   const Pattern built = build_pattern(catalogue(), {"even-ripple", 6, 0, ""});
@@ -440,7 +440,7 @@ TEST(Labels, SharedDGetsBondCountsAndSharedBondsGetSuffixes) {
   EXPECT_EQ(std::set<std::string>(long_labels.begin(), long_labels.end()).size(), 50u);
 }
 
-// Issue 21: the atlas confirms a value d(n). Delta(k) - 1 has d = 1/(k-1) with its vacancy at any
+// The atlas confirms a value d(n). Delta(k) - 1 has d = 1/(k-1) with its vacancy at any
 // site (distinct contact graphs), so runs that end in different vacancy places all reach d(n);
 // a packing whose d differs by 1e-13 (further apart than any two values of one n met: 8e-12 at
 // n = 74) is another value and confirms nothing of it.

@@ -145,7 +145,7 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
   fs::remove_all(dir);
 }
 
-// The atlas's points (issue 12): a column of their own, drawn as grey dots under one legend
+// The atlas's points: a column of their own, drawn as grey dots under one legend
 // entry, never as the classless open squares even though their class is "".
 TEST(Plot, AtlasPointsHaveTheirOwnColumnAndLegend) {
   const fs::path dir = scratch("delta-atlas");

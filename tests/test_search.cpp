@@ -1,4 +1,4 @@
-// The search (search/search.hpp, issue 21): reproducible on one thread with a step budget, reaches
+// The search (search/search.hpp): reproducible on one thread with a step budget, reaches
 // proven optima, stops at a target, continues from given packings, records as campaign units.
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-// store/: the campaign results database (issue 11): records, deduplication, resumption, refusal
+// store/: the campaign results database: records, deduplication, resumption, refusal
 // of foreign files, locks, what a killed writer leaves behind, the version-1 migration, imported
 // packings and the duplicate counts of `db check`.
 #include <gtest/gtest.h>
@@ -329,7 +329,7 @@ TEST(Store, ASearchChainAndABilliardsRunOfOneSeedAreTwoUnits) {
   EXPECT_EQ(db.statistics().duplicate_runs, 0);
 }
 
-// Confirmations (issue 21): every unit that started from nothing stored counts, a search
+// Confirmations: every unit that started from nothing stored counts, a search
 // continued from stored packings does not; the count survives into the packing record and
 // into the best-per-n query (which reads the runs table through a derived table).
 TEST(Store, ContinuedSearchesDoNotConfirmAPacking) {
