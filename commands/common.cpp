@@ -17,6 +17,17 @@ Catalogue load_catalogue(const Context& context) {
 void Output::declare(OptionList& o, bool with_points) {
   o.flag("--json", json, "print one JSON object");
   o.flag("--csv", csv, "print CSV (a header, then rows)");
+  o.parsed(
+      "--output-format",
+      [this](const std::string& s) {
+        bool known = false;
+        for (const auto& w : report::output_writers()) known = known || w.format == s;
+        if (!known)
+          throw std::invalid_argument("--output-format must be one of " +
+                                      report::output_format_names() + ", not '" + s + "'");
+        name = s;
+      },
+      "text", "print the result as " + report::output_format_names());
   if (with_points) o.flag("--points", points, "with --json: every packing's coordinates");
 }
 

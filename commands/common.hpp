@@ -14,20 +14,29 @@
 #include "constructors/catalogue.hpp"
 #include "core/packing.hpp"
 #include "report/progress_line.hpp"
+#include "report/described.hpp"
 #include "report/render.hpp"
 
 namespace tripack::commands {
 
 Catalogue load_catalogue(const Context& context);
 
-// --json / --csv / --points: how the result is printed.
+// --json / --csv / --output-format NAME / --points: how the result is printed.
 struct Output {
   bool json = false, csv = false;
+  std::string name;     // --output-format: a writer of report/described.hpp's table
   bool points = false;  // JSON: with coordinates
   void declare(OptionList& o, bool with_points = false);
+  // text, json or csv: the result's own view; any other writer: its description.
+  std::string format_name() const { return json ? "json" : (csv ? "csv" : (name.empty() ? "text" : name)); }
   report::OutputFormat format() const {
-    return json ? report::OutputFormat::Json
-                : (csv ? report::OutputFormat::Csv : report::OutputFormat::Text);
+    const std::string f = format_name();
+    return f == "json" ? report::OutputFormat::Json
+                       : (f == "csv" ? report::OutputFormat::Csv : report::OutputFormat::Text);
+  }
+  bool own_view() const {
+    const std::string f = format_name();
+    return f == "text" || f == "json" || f == "csv";
   }
 };
 
@@ -46,7 +55,13 @@ template <class Result>
 void print_result(const Result& result, const Output& out) {
   std::ostringstream buffer;
   try {
-    report::render(buffer, result, out.format(), {out.points});
+    if (out.own_view()) {
+      report::render(buffer, result, out.format(), {out.points});
+    } else {
+      std::ostringstream json;
+      report::render(json, result, report::OutputFormat::Json, {out.points});
+      report::write_json_description(buffer, json.str(), out.format_name());
+    }
   } catch (const std::exception& e) {
     std::ostringstream text;
     report::render(text, result, report::OutputFormat::Text, {out.points});

@@ -94,12 +94,9 @@ void render(std::ostream& out, const Result& result, OutputFormat format,
   }
 }
 
-// A described result (core/described.hpp): through the writers' table.
-inline void render(std::ostream& out, const Described& result, OutputFormat format,
-                   const RenderOptions& = {}) {
-  write_described(out, result,
-                  format == OutputFormat::Json ? "json" : (format == OutputFormat::Csv ? "csv" : "text"));
-}
+// A described result (core/described.hpp): through the output writers' table.
+void render(std::ostream& out, const Described& result, OutputFormat format,
+            const RenderOptions& options = {});
 
 // {"error": message} on one line.
 void render_error_json(std::ostream& out, const std::string& message);
