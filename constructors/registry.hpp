@@ -1,7 +1,7 @@
 // build_pattern(catalogue, request): validates a request against the catalogue and runs the
 // builder that classes.yaml names for its class. Builders are looked up by that name in a table
 // each builder file adds itself to (BuilderRegistration), so a new builder is its own .cpp file
-// plus its classes.yaml entry (docs/extending-builders-effects.md).
+// plus its classes.yaml entry (docs/extending.md).
 #pragma once
 
 #include <string>

@@ -2,7 +2,7 @@
 // the engine (sim/engine.hpp). The effects a scene may name are listed once, in
 // sim/effect_list.hpp; scene parsing, validation, reports and the engine's instantiations all go
 // through that list, so a new effect is its policy header, its scene data (sim/scene.hpp) and a
-// line in the list (docs/extending-builders-effects.md).
+// line in the list (docs/extending.md).
 //
 // Scene side, static, required:
 //   kKey                               its key under `effects:` in scene YAML
