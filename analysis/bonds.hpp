@@ -1,5 +1,5 @@
-// Bonds and rattlers of a configuration (docs/conventions.md-§2): which near contacts are real, which disks
-// are held, and how small the remaining gaps are.
+// Bonds and rattlers of a configuration (docs/conventions.md-§2): which near contacts are real,
+// which disks are held, and how small the remaining gaps are.
 #pragma once
 
 #include <cstdint>

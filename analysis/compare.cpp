@@ -424,6 +424,8 @@ std::vector<int> distinct_packings(const std::vector<Pattern>& patterns,
   return ids;
 }
 
-void identify(PackingRecord& record) { record.graph_hash = contact_graph_hash(record.pattern); }
+void identify(PackingRecord& record) {
+  record.graph_hash = contact_graph_hash(record.pattern);
+}
 
 }  // namespace tripack

@@ -1,6 +1,6 @@
-// Exact verification of the closed-form constructions (docs/certified.md): Delta(k), Delta(k)-1, 4Delta(k)
-// and the twin class have every coordinate in Q(sqrt3) (Pattern::exact), so their bonds can be
-// proved to be contacts and their gaps proved open without any rounding.
+// Exact verification of the closed-form constructions (docs/certified.md): Delta(k), Delta(k)-1,
+// 4Delta(k) and the twin class have every coordinate in Q(sqrt3) (Pattern::exact), so their bonds
+// can be proved to be contacts and their gaps proved open without any rounding.
 #pragma once
 
 #include <cstddef>

@@ -66,8 +66,7 @@ class CliOptions : public OptionList {
   Handle& option(const std::string& n, std::uint64_t& f, const std::string& h) override {
     return bind(n, f, h);
   }
-  Handle& option(const std::string& n, std::vector<std::string>& f,
-                 const std::string& h) override {
+  Handle& option(const std::string& n, std::vector<std::string>& f, const std::string& h) override {
     return keep(app_->add_option(n, f, h));
   }
   Handle& flag(const std::string& n, bool& f, const std::string& h) override {

@@ -1,5 +1,5 @@
-// The billiards engine (docs/billiards.md, §6): events/s while compressing to jamming, the time to reach a
-// relative gap of 1e-3 .. 1e-12, and the cost of an effect that is compiled in but absent.
+// The billiards engine (docs/billiards.md, §6): events/s while compressing to jamming, the time to
+// reach a relative gap of 1e-3 .. 1e-12, and the cost of an effect that is compiled in but absent.
 // Single thread. Run: build/bench/bench_billiards
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,5 @@
-// Build and polish time against n (the goals: 10^6 disks built in < 1 s; polish of n ~ 10^4 in < 2 s).
-// Run: build/bench/bench_build --benchmark_counters_tabular=true
+// Build and polish time against n (the goals: 10^6 disks built in < 1 s; polish of n ~ 10^4 in < 2
+// s). Run: build/bench/bench_build --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <random>

@@ -78,9 +78,17 @@ class CheckFormula : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_classes() { return std::make_unique<Classes>(); }
-std::unique_ptr<Command> make_classify() { return std::make_unique<Classify>(); }
-std::unique_ptr<Command> make_table() { return std::make_unique<Table>(); }
-std::unique_ptr<Command> make_check_formula() { return std::make_unique<CheckFormula>(); }
+std::unique_ptr<Command> make_classes() {
+  return std::make_unique<Classes>();
+}
+std::unique_ptr<Command> make_classify() {
+  return std::make_unique<Classify>();
+}
+std::unique_ptr<Command> make_table() {
+  return std::make_unique<Table>();
+}
+std::unique_ptr<Command> make_check_formula() {
+  return std::make_unique<CheckFormula>();
+}
 
 }  // namespace tripack::commands

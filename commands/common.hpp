@@ -13,8 +13,8 @@
 #include "commands/command.hpp"
 #include "constructors/catalogue.hpp"
 #include "core/packing.hpp"
-#include "report/progress_line.hpp"
 #include "report/described.hpp"
+#include "report/progress_line.hpp"
 #include "report/render.hpp"
 
 namespace tripack::commands {
@@ -28,7 +28,9 @@ struct Output {
   bool points = false;  // JSON: with coordinates
   void declare(OptionList& o, bool with_points = false);
   // text, json or csv: the result's own view; any other writer: its description.
-  std::string format_name() const { return json ? "json" : (csv ? "csv" : (name.empty() ? "text" : name)); }
+  std::string format_name() const {
+    return json ? "json" : (csv ? "csv" : (name.empty() ? "text" : name));
+  }
   report::OutputFormat format() const {
     const std::string f = format_name();
     return f == "json" ? report::OutputFormat::Json

@@ -1,8 +1,8 @@
 // The database commands: db best, check, export, import, prune.
+#include <fmt/format.h>
+
 #include <limits>
 #include <memory>
-
-#include <fmt/format.h>
 
 #include "commands/common.hpp"
 #include "core/option_values.hpp"
@@ -122,10 +122,20 @@ class DbPrune : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_db_best() { return std::make_unique<DbBest>(); }
-std::unique_ptr<Command> make_db_check() { return std::make_unique<DbCheck>(); }
-std::unique_ptr<Command> make_db_export() { return std::make_unique<DbExport>(); }
-std::unique_ptr<Command> make_db_import() { return std::make_unique<DbImport>(); }
-std::unique_ptr<Command> make_db_prune() { return std::make_unique<DbPrune>(); }
+std::unique_ptr<Command> make_db_best() {
+  return std::make_unique<DbBest>();
+}
+std::unique_ptr<Command> make_db_check() {
+  return std::make_unique<DbCheck>();
+}
+std::unique_ptr<Command> make_db_export() {
+  return std::make_unique<DbExport>();
+}
+std::unique_ptr<Command> make_db_import() {
+  return std::make_unique<DbImport>();
+}
+std::unique_ptr<Command> make_db_prune() {
+  return std::make_unique<DbPrune>();
+}
 
 }  // namespace tripack::commands

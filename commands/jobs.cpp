@@ -1,9 +1,9 @@
 // The long workflows: explore, campaign, atlas, exact, exact-atlas.
+#include <fmt/format.h>
+
 #include <map>
 #include <memory>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "commands/common.hpp"
 #include "core/data_directory.hpp"
@@ -61,11 +61,11 @@ class Explore : public Command {
       std::cerr << fmt::format("explore: the atlas {}: {} rows, analysing its best packings\n",
                                csv.string(), rows.size());
       const auto gaps_csv = csv.parent_path() / "atlas-gaps.csv";
-      shown = report::ExploreAtlas{
-          csv, std::move(rows), jobs::load_atlas(csv, 1),
-          std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
-                                            : std::vector<jobs::AtlasGap>{},
-          jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
+      shown =
+          report::ExploreAtlas{csv, std::move(rows), jobs::load_atlas(csv, 1),
+                               std::filesystem::exists(gaps_csv) ? jobs::read_atlas_gaps(gaps_csv)
+                                                                 : std::vector<jobs::AtlasGap>{},
+                               jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
     }
     const CancelToken never;
     report::ProgressLine progress(std::cerr, job_line("explore", 0));
@@ -110,8 +110,9 @@ class Campaign : public Command {
     if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
     // The database's best of every n in the range, labelled like `db best`.
     const report::CampaignReport report{
-        request.n_first, request.n_last, request.runs, request.db, result,
-        jobs::best_table(request.db, request.n_first, request.n_last)};
+        request.n_first, request.n_last,
+        request.runs,    request.db,
+        result,          jobs::best_table(request.db, request.n_first, request.n_last)};
     print_result(report, out);
     return result.cancelled ? cancelled("every finished unit is recorded; rerun to continue") : 0;
   }
@@ -200,10 +201,20 @@ class ExactAtlas : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_explore() { return std::make_unique<Explore>(); }
-std::unique_ptr<Command> make_campaign() { return std::make_unique<Campaign>(); }
-std::unique_ptr<Command> make_atlas() { return std::make_unique<Atlas>(); }
-std::unique_ptr<Command> make_exact() { return std::make_unique<Exact>(); }
-std::unique_ptr<Command> make_exact_atlas() { return std::make_unique<ExactAtlas>(); }
+std::unique_ptr<Command> make_explore() {
+  return std::make_unique<Explore>();
+}
+std::unique_ptr<Command> make_campaign() {
+  return std::make_unique<Campaign>();
+}
+std::unique_ptr<Command> make_atlas() {
+  return std::make_unique<Atlas>();
+}
+std::unique_ptr<Command> make_exact() {
+  return std::make_unique<Exact>();
+}
+std::unique_ptr<Command> make_exact_atlas() {
+  return std::make_unique<ExactAtlas>();
+}
 
 }  // namespace tripack::commands

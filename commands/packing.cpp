@@ -95,10 +95,8 @@ class Analyze : public Command {
       std::cerr << "tripack: warning: " << warning << "\n";
     print_result(result, out);
     if (!output.empty())
-      write_packing_file(output, pipeline::record_of(result.analysis),
-                         file_digits(request.digits));
-    diagrams.draw(result.analysis.pattern,
-                  std::filesystem::path(request.file).filename().string(),
+      write_packing_file(output, pipeline::record_of(result.analysis), file_digits(request.digits));
+    diagrams.draw(result.analysis.pattern, std::filesystem::path(request.file).filename().string(),
                   result.analysis.stress.forces);
     return 0;
   }
@@ -155,8 +153,14 @@ class Draw : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_build() { return std::make_unique<Build>(); }
-std::unique_ptr<Command> make_analyze() { return std::make_unique<Analyze>(); }
-std::unique_ptr<Command> make_draw() { return std::make_unique<Draw>(); }
+std::unique_ptr<Command> make_build() {
+  return std::make_unique<Build>();
+}
+std::unique_ptr<Command> make_analyze() {
+  return std::make_unique<Analyze>();
+}
+std::unique_ptr<Command> make_draw() {
+  return std::make_unique<Draw>();
+}
 
 }  // namespace tripack::commands

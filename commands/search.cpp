@@ -1,16 +1,17 @@
 // The commands that look for packings: billiards, compare, search.
+#include "search/search.hpp"
+
+#include <fmt/format.h>
+
 #include <filesystem>
 #include <memory>
 #include <optional>
-
-#include <fmt/format.h>
 
 #include "commands/common.hpp"
 #include "formats/formats.hpp"
 #include "jobs/billiards_search.hpp"
 #include "jobs/compare.hpp"
 #include "jobs/stored.hpp"
-#include "search/search.hpp"
 
 namespace tripack::commands {
 
@@ -18,8 +19,8 @@ namespace {
 
 // N or --scene, and the runs: what billiards and compare share.
 struct BilliardsRuns {
-  long long n = 0;     // 0: the scene's n
-  std::string scene;   // YAML file; empty: the built-in scene
+  long long n = 0;    // 0: the scene's n
+  std::string scene;  // YAML file; empty: the built-in scene
   jobs::BilliardsSearch search;
 
   void declare(OptionList& o) {
@@ -135,8 +136,14 @@ class Search : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_billiards() { return std::make_unique<Billiards>(); }
-std::unique_ptr<Command> make_compare() { return std::make_unique<Compare>(); }
-std::unique_ptr<Command> make_search() { return std::make_unique<Search>(); }
+std::unique_ptr<Command> make_billiards() {
+  return std::make_unique<Billiards>();
+}
+std::unique_ptr<Command> make_compare() {
+  return std::make_unique<Compare>();
+}
+std::unique_ptr<Command> make_search() {
+  return std::make_unique<Search>();
+}
 
 }  // namespace tripack::commands

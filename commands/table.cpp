@@ -52,8 +52,8 @@ const std::vector<CommandEntry>& command_table() {
        false, make_draw},
       {"billiards", "Lubachevsky-Stillinger runs from random starts, certified and ranked",
        kLongJob, make_billiards},
-      {"compare", "The catalogue's best builder for N against the best billiards packing",
-       kLongJob, make_compare},
+      {"compare", "The catalogue's best builder for N against the best billiards packing", kLongJob,
+       make_compare},
       {"search",
        "Basin-hopping search for the densest packing of N disks within a time budget: the best "
        "packing (certified), when it was first reached, and the distinct packings by rank",
@@ -85,9 +85,8 @@ const std::vector<CommandEntry>& command_table() {
        "Integrity check and counts: runs, values of n, packings, duplicates (exit 1 if the "
        "check fails or there are duplicates)",
        false, make_db_check},
-      {"db export",
-       "The stored packings of N as coordinate files (best first: rank 1 is tNa)", false,
-       make_db_export},
+      {"db export", "The stored packings of N as coordinate files (best first: rank 1 is tNa)",
+       false, make_db_export},
       {"db import",
        "Read packing files (any layout of 'analyze'), certify them like 'analyze' and store "
        "them; a file with overlapping disks or a packing that does not certify is refused and "

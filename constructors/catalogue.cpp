@@ -1,5 +1,4 @@
 #include "constructors/catalogue.hpp"
-#include "core/data_directory.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -8,6 +7,7 @@
 #include <sstream>
 
 #include "constructors/chain.hpp"
+#include "core/data_directory.hpp"
 
 namespace tripack {
 

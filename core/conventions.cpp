@@ -1,9 +1,8 @@
 #include "core/conventions.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <cmath>
 
 #include "core/geometry.hpp"
 

@@ -35,8 +35,8 @@ long double to_d(long double value, Convention c);
 long double from_d(long double d, Convention c);
 
 // A disk centre p of a packing with minimum distance d, given in the unit-triangle convention,
-// as the same disk's centre in convention c (docs/conventions.md). The centres' triangle is the container
-// shrunk by the disks' radius about its incentre:
+// as the same disk's centre in convention c (docs/conventions.md). The centres' triangle is the
+// container shrunk by the disks' radius about its incentre:
 //  * unit-triangle: p itself;
 //  * radius: circles of radius r = radius_from_d(d) in the triangle (0,0) (1,0) (1/2, sqrt3/2);
 //    their centres' triangle has side 1 - 2 sqrt3 r = 1 / (1 + sqrt3 d);

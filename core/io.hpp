@@ -25,8 +25,8 @@ struct InputError : std::runtime_error {
 };
 
 // How the writers below lay out the coordinates. The defaults give the unit-triangle files
-// tripack always wrote. In another convention (docs/conventions.md) the coordinates are converted by
-// point_in_convention and the file says so: a "# convention: NAME (...)" comment line (JSON:
+// tripack always wrote. In another convention (docs/conventions.md) the coordinates are converted
+// by point_in_convention and the file says so: a "# convention: NAME (...)" comment line (JSON:
 // "convention"), which read_points reports and packing_from_points follows. d stays the
 // unit-triangle d in every convention (r and S are given beside it).
 struct WriteOptions {

@@ -1,7 +1,6 @@
 #include "core/option_values.hpp"
 
 #include <cmath>
-
 #include <sstream>
 #include <stdexcept>
 

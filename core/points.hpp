@@ -1,7 +1,7 @@
-// Points as people's files give them -> a Packing in the unit triangle (docs/conventions.md). Files come in
-// three conventions and with the slips of hand-made data: coordinates rounded to a few digits
-// (a wall disk a hair outside), or a container drawn upside down or with x and y swapped. Each
-// slip that can be undone safely is undone with one warning line; the others are one-line
+// Points as people's files give them -> a Packing in the unit triangle (docs/conventions.md). Files
+// come in three conventions and with the slips of hand-made data: coordinates rounded to a few
+// digits (a wall disk a hair outside), or a container drawn upside down or with x and y swapped.
+// Each slip that can be undone safely is undone with one warning line; the others are one-line
 // InputErrors.
 #pragma once
 

@@ -97,8 +97,8 @@ struct PackingRecord {
   void merge_sources(const PackingRecord& other);
 };
 
-// The same packing: the same n and contact graph (graph_hash, set by analysis/compare.hpp identify) and d
-// within kSameDTolerance, or the same PackingKey (d equal to kIdentityDigits digits).
+// The same packing: the same n and contact graph (graph_hash, set by analysis/compare.hpp identify)
+// and d within kSameDTolerance, or the same PackingKey (d equal to kIdentityDigits digits).
 bool same_packing(const PackingRecord& a, const PackingRecord& b);
 // The rule itself, on what it reads (for a store that keeps rows, not records).
 struct IdentityFields {

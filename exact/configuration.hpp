@@ -17,9 +17,9 @@ namespace tripack::exact {
 
 struct ConfigurationInput {
   int n = 0;
-  std::vector<Bond> bonds;    // disk pairs and walls (core/packing.hpp)
-  std::vector<int> rattlers;  // 0-based
-  std::string d;              // d to 2D digits
+  std::vector<Bond> bonds;                         // disk pairs and walls (core/packing.hpp)
+  std::vector<int> rattlers;                       // 0-based
+  std::string d;                                   // d to 2D digits
   std::vector<std::array<std::string, 2>> points;  // unit-triangle coordinates to 2D digits
   std::vector<std::array<std::string, 2>> given;   // the packing as given (e.g. an atlas file)
   int digits = 0;                                  // D
@@ -27,9 +27,9 @@ struct ConfigurationInput {
 
 struct ExactConfiguration {
   bool proven = false;
-  std::string reason;              // what stopped it
-  IntegerPolynomial field;         // K(t), irreducible over Q (checked)
-  IsolatedRoot embedding;          // t0
+  std::string reason;       // what stopped it
+  IntegerPolynomial field;  // K(t), irreducible over Q (checked)
+  IsolatedRoot embedding;   // t0
   RationalPolynomial d_in_field, sqrt3_in_field;
   // Non-rattlers: polynomials in t; rattlers: constants (their given centred place, 40 digits).
   std::vector<std::array<RationalPolynomial, 2>> points;

@@ -1,11 +1,11 @@
 #include "exact/flint_tools.hpp"
 
-#include "exact/lll.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+
+#include "exact/lll.hpp"
 
 namespace tripack::exact::flint {
 
@@ -25,7 +25,9 @@ void power_of_ten(fmpz_t out, ulong exponent) {
 
 }  // namespace
 
-slong bits_for(int digits) { return static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 64; }
+slong bits_for(int digits) {
+  return static_cast<slong>(std::ceil(digits * 3.3219280948873623)) + 64;
+}
 
 void set_decimal(arb_t x, const std::string& text, int digits, slong prec) {
   if (text.empty() || arb_set_str(x, text.c_str(), prec) != 0)
@@ -39,9 +41,9 @@ void set_decimal(arb_t x, const std::string& text, int digits, slong prec) {
   arb_add_error(x, error.value);
 }
 
-std::optional<std::vector<std::string>> integer_relation(const std::vector<const arb_struct*>& values,
-                                                         int scale_digits, slong prec,
-                                                         double& relation_digits) {
+std::optional<std::vector<std::string>> integer_relation(
+    const std::vector<const arb_struct*>& values, int scale_digits, slong prec,
+    double& relation_digits) {
   const auto k = static_cast<slong>(values.size());
   fmpz_mat_t lattice;
   fmpz_mat_init(lattice, k, k + 1);
@@ -65,9 +67,9 @@ std::optional<std::vector<std::string>> integer_relation(const std::vector<const
   }
   fmpz_mat_clear(lattice);
   if (zero) return std::nullopt;
-  relation_digits = static_cast<double>(k) *
-                    (fmpz_is_zero(height.value) ? 0.0
-                                                : static_cast<double>(fmpz_sizeinbase(height.value, 10)));
+  relation_digits =
+      static_cast<double>(k) *
+      (fmpz_is_zero(height.value) ? 0.0 : static_cast<double>(fmpz_sizeinbase(height.value, 10)));
   return coefficients;
 }
 
@@ -84,7 +86,8 @@ void poly_from_strings(fmpz_poly_t poly, const std::vector<std::string>& coeffic
 IntegerPolynomial strings_from_poly(const fmpz_poly_t poly) {
   IntegerPolynomial out;
   for (slong i = 0; i < fmpz_poly_length(poly); ++i)
-    out.coefficients.push_back(take_string(fmpz_get_str(nullptr, 10, fmpz_poly_get_coeff_ptr(poly, i))));
+    out.coefficients.push_back(
+        take_string(fmpz_get_str(nullptr, 10, fmpz_poly_get_coeff_ptr(poly, i))));
   if (out.coefficients.empty()) out.coefficients.push_back("0");
   return out;
 }
@@ -146,7 +149,9 @@ std::optional<IsolatedRoot> isolate_root(const fmpz_poly_t f, const arb_t x, int
                       take_string(fmpq_get_str(nullptr, 10, high.value))};
 }
 
-Field::Field(const IntegerPolynomial& k) { fmpq_poly_from_strings(modulus_.value, k.coefficients); }
+Field::Field(const IntegerPolynomial& k) {
+  fmpq_poly_from_strings(modulus_.value, k.coefficients);
+}
 
 void Field::set(fmpq_poly_t out, const RationalPolynomial& a) const {
   fmpq_poly_from_strings(out, a.coefficients);

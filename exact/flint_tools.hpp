@@ -65,9 +65,9 @@ void set_decimal(arb_t x, const std::string& text, int digits, slong prec);
 // An integer relation c_0 v_0 + ... + c_{k-1} v_{k-1} ~ 0 among the balls `values` (their
 // midpoints scaled by 10^scale_digits and rounded, then LLL): the first reduced row. None when
 // that row is 0. `relation_digits` gets k * log10(max |c_i|).
-std::optional<std::vector<std::string>> integer_relation(const std::vector<const arb_struct*>& values,
-                                                         int scale_digits, slong prec,
-                                                         double& relation_digits);
+std::optional<std::vector<std::string>> integer_relation(
+    const std::vector<const arb_struct*>& values, int scale_digits, slong prec,
+    double& relation_digits);
 
 void poly_from_strings(fmpz_poly_t poly, const std::vector<std::string>& coefficients);
 IntegerPolynomial strings_from_poly(const fmpz_poly_t poly);

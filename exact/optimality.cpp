@@ -34,7 +34,8 @@ class Matrix {
 
  private:
   std::size_t index(int r, int c) const {
-    return static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(c);
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) +
+           static_cast<std::size_t>(c);
   }
   int rows_, columns_;
   std::vector<std::unique_ptr<FmpqPoly>> cells_;
@@ -70,7 +71,8 @@ std::vector<int> row_reduce(Matrix& m, const flint::Field& field) {
 
 }  // namespace
 
-StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const ExactConfiguration& config,
+StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
+                                         const ExactConfiguration& config,
                                          const std::vector<long double>& forces) {
   StrictOptimality out;
   if (!config.proven) {
@@ -149,7 +151,8 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const Exa
     for (int c = 0; c < bonds; ++c) v.push_back(std::make_unique<FmpqPoly>());
     fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
     for (std::size_t r = 0; r < pivots.size(); ++r)
-      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value, reduced.at(static_cast<int>(r), f));
+      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value,
+                    reduced.at(static_cast<int>(r), f));
     basis.push_back(std::move(v));
   }
   // At t0.
@@ -158,7 +161,8 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const Exa
   Eigen::MatrixXd at(bonds, static_cast<Eigen::Index>(basis.size()));
   for (std::size_t k = 0; k < basis.size(); ++k)
     for (int c = 0; c < bonds; ++c) {
-      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0.value, prec);
+      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0.value,
+                             prec);
       at(c, static_cast<Eigen::Index>(k)) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
     }
   // The combination: one basis vector (sign made positive), or the least-squares fit of the
@@ -169,7 +173,8 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const Exa
     coefficients(0) = at.col(0).sum() < 0 ? -1.0 : 1.0;
   } else {
     if (forces.size() != static_cast<std::size_t>(bonds)) {
-      out.reason = fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
+      out.reason =
+          fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
       return out;
     }
     Arb dv;
@@ -194,12 +199,13 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const Exa
   for (int b = 0; b < bonds; ++b) stress.push_back(std::make_unique<FmpqPoly>());
   const double scale = coefficients.cwiseAbs().maxCoeff();
   for (std::size_t k = 0; k < basis.size(); ++k) {
-    fmpz_set_d(numerator.value, std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
+    fmpz_set_d(numerator.value,
+               std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
     fmpq_set_fmpz_frac(c.value, numerator.value, denominator.value);
     for (int b = 0; b < bonds; ++b) {
       fmpq_poly_scalar_mul_fmpq(term.value, basis[k][static_cast<std::size_t>(b)]->value, c.value);
-      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value, stress[static_cast<std::size_t>(b)]->value,
-                    term.value);
+      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value,
+                    stress[static_cast<std::size_t>(b)]->value, term.value);
     }
   }
   // Exactly balanced (by construction; checked), strictly positive at t0 (Arb).
@@ -219,8 +225,9 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in, const Exa
   for (int b = 0; b < bonds; ++b) {
     flint::Field::evaluate(value.value, stress[static_cast<std::size_t>(b)]->value, t0.value, prec);
     if (!arb_is_positive(value.value)) {
-      out.reason = fmt::format("the exact stress is not strictly positive on bond {} ({} self-stresses)", b + 1,
-                               basis.size());
+      out.reason =
+          fmt::format("the exact stress is not strictly positive on bond {} ({} self-stresses)",
+                      b + 1, basis.size());
       return out;
     }
     const double v = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);

@@ -29,8 +29,7 @@ void write_extended_xyz(std::ostream& out, const PackingRecord& record,
   for (std::size_t i = 0; i < points.size(); ++i) {
     const std::string x = precise.empty() ? format_significant(points[i].x, digits) : precise[i][0];
     const std::string y = precise.empty() ? format_significant(points[i].y, digits) : precise[i][1];
-    out << "X " << x << ' ' << y << " 0 " << radius << ' '
-        << int(rattler[i]) << "\n";
+    out << "X " << x << ' ' << y << " 0 " << radius << ' ' << int(rattler[i]) << "\n";
   }
 }
 

@@ -8,7 +8,6 @@
 #include <optional>
 #include <sstream>
 #include <string>
-
 #include <vector>
 
 #include "core/io.hpp"

@@ -1,5 +1,3 @@
-#include "formats/formats.hpp"
-#include "core/data_directory.hpp"
 #include "jobs/accuracy.hpp"
 
 #include <fmt/format.h>
@@ -15,15 +13,17 @@
 #include "analysis/bonds.hpp"
 #include "analysis/compare.hpp"
 #include "analysis/relax.hpp"
+#include "core/data_directory.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 #include "core/points.hpp"
 #include "core/timing.hpp"
+#include "formats/formats.hpp"
 #include "jobs/billiards_search.hpp"
-#include "runner/runner.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "polish/polish_mp.hpp"
+#include "runner/runner.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
 

@@ -1,7 +1,7 @@
-// "Accuracy costs time" as data (docs/accuracy.md): how many correct digits of d billiards alone reaches,
-// and at what cost, against the polishers (long double, MPFR); and the hard cases that must stay
-// stable (tight cages, near contacts, near-equal gaps, large n, near-degenerate contacts, corner
-// disks, two packings of 33 disks 1e-8 apart). Returns results; prints nothing.
+// "Accuracy costs time" as data (docs/accuracy.md): how many correct digits of d billiards alone
+// reaches, and at what cost, against the polishers (long double, MPFR); and the hard cases that
+// must stay stable (tight cages, near contacts, near-equal gaps, large n, near-degenerate contacts,
+// corner disks, two packings of 33 disks 1e-8 apart). Returns results; prints nothing.
 #pragma once
 
 #include <cstdint>

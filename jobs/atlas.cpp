@@ -15,12 +15,12 @@
 #include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "runner/runner.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "polish/polish_mp.hpp"
+#include "runner/runner.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::jobs {

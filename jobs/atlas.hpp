@@ -4,17 +4,15 @@
 // and one coordinates file per row, written by report/atlas_report.hpp) that anyone can check.
 #pragma once
 
-#include <tuple>
-
 #include <algorithm>
-
 #include <array>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "constructors/catalogue.hpp"
 #include "core/option_values.hpp"
 #include "core/options.hpp"
-#include "constructors/catalogue.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
 
@@ -41,7 +39,9 @@ struct AtlasSettings {
         "2..200", "A..B, N, or a list of them: 254,255,256");
     o.parsed(
         "--ranked",
-        [this](const std::string& s) { std::tie(ranked_first, ranked_last) = parse_range(s, "--ranked"); },
+        [this](const std::string& s) {
+          std::tie(ranked_first, ranked_last) = parse_range(s, "--ranked");
+        },
         "16..34", "these n keep --ranked-count packings");
     o.option("--ranked-count", ranked_count, "packings kept for --ranked n").range(1, 1000);
     o.option("--digits", digits, "significant digits of d and the coordinates").range(19, 1000);

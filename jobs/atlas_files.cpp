@@ -1,4 +1,3 @@
-#include "formats/formats.hpp"
 #include "jobs/atlas_files.hpp"
 
 #include <fmt/format.h>
@@ -9,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/io.hpp"
+#include "formats/formats.hpp"
 #include "pipeline/analyze.hpp"
 
 namespace tripack::jobs {

@@ -24,7 +24,8 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir);
 std::string atlas_table(const AtlasResult& atlas);
 
 // DIR/atlas.csv read back: a record per row with its label, rank, d and L (the table's digits),
-// its coordinates (from its file), `file`, and the source and confirmations columns as a Table source; bonds are not in the files (load_atlas analyses them). Throws a one-line
+// its coordinates (from its file), `file`, and the source and confirmations columns as a Table
+// source; bonds are not in the files (load_atlas analyses them). Throws a one-line
 // std::runtime_error naming the file and line when the table or a file is missing or malformed.
 std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv);
 

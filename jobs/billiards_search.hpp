@@ -1,6 +1,6 @@
 // Many billiards runs of one scene on the job runner's threads, each end state relaxed, polished
-// and certified, then the distinct packings ranked by d and labelled like the paper (t22a, t22b, ...).
-// Returns results; progress goes to a callback.
+// and certified, then the distinct packings ranked by d and labelled like the paper (t22a, t22b,
+// ...). Returns results; progress goes to a callback.
 #pragma once
 
 #include <cstdint>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "core/options.hpp"
 #include "constructors/catalogue.hpp"
+#include "core/options.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"
 #include "pipeline/analyze.hpp"
@@ -51,12 +51,12 @@ struct RunOutcome {
 struct BilliardsSearchResult {
   Scene scene;
   int runs_asked = 0;
-  std::vector<RunOutcome> runs;           // in seed order
+  std::vector<RunOutcome> runs;  // in seed order
   bool cancelled() const { return runs.size() < static_cast<std::size_t>(runs_asked); }
   // The distinct packings the runs ended in (core/record.hpp: one per packing, each with its
   // billiards source: first seed and runs), ranked and labelled, best first.
   std::vector<PackingRecord> packings;
-  double seconds = 0;                     // wall time of the whole search
+  double seconds = 0;  // wall time of the whole search
 };
 
 // A scene naming a built pattern gets its points from the builder (sim/ cannot build); n is

@@ -11,11 +11,11 @@
 #include "core/io.hpp"
 #include "core/precision.hpp"
 #include "core/timing.hpp"
-#include "runner/ranks.hpp"
 #include "jobs/stored.hpp"
-#include "search/search.hpp"
 #include "jobs/work_unit.hpp"
 #include "pipeline/analyze.hpp"
+#include "runner/ranks.hpp"
+#include "search/search.hpp"
 #include "sim/billiards.hpp"
 
 namespace tripack::jobs {
@@ -133,8 +133,9 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
     throw;
   }
   std::vector<std::size_t> pending;
-  const std::string method =
-      request.search_seconds ? search::search_method(search_of(request, 0, 0)) : store::RunRecord{}.method;
+  const std::string method = request.search_seconds
+                                 ? search::search_method(search_of(request, 0, 0))
+                                 : store::RunRecord{}.method;
   for (std::size_t i = 0; i < units.size(); ++i)
     if (!db->has_run(units[i].n, units[i].seed, method)) pending.push_back(i);
   result.units = static_cast<long long>(units.size());

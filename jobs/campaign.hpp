@@ -1,14 +1,14 @@
 // Campaigns (docs/campaigns.md): billiards runs over many n as work units (n, seed), run by the job
-// runner on threads or, when the program was started by mpirun, on MPI ranks (runner/ranks.hpp), each
-// finished unit recorded in the results database at once (store/), so rerunning the same request
-// skips every unit already recorded and an interrupted campaign loses at most the units under way.
+// runner on threads or, when the program was started by mpirun, on MPI ranks (runner/ranks.hpp),
+// each finished unit recorded in the results database at once (store/), so rerunning the same
+// request skips every unit already recorded and an interrupted campaign loses at most the units
+// under way.
 #pragma once
-
-#include <tuple>
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/option_values.hpp"
@@ -26,7 +26,7 @@ struct CampaignRequest {
   std::uint64_t seed = 1;
   int threads = 1;  // under mpirun: rank 0's own worker threads (0: it only hands out and writes)
   std::string db = "tripack.db";  // the results database file
-  std::optional<Scene> scene;  // effects and stop rule for every n (default_scene(n) if none)
+  std::optional<Scene> scene;     // effects and stop rule for every n (default_scene(n) if none)
   // Set: every unit is a search chain (search/search.hpp) of this many seconds from random starts
   // instead of one billiards run; its method is "search S s".
   std::optional<double> search_seconds;
@@ -34,8 +34,8 @@ struct CampaignRequest {
 
   void declare(OptionList& o) {
     o.parsed(
-        "--n", [this](const std::string& s) { std::tie(n_first, n_last) = parse_range(s, "--n"); },
-        "", "A..B or N")
+         "--n", [this](const std::string& s) { std::tie(n_first, n_last) = parse_range(s, "--n"); },
+         "", "A..B or N")
         .required();
     o.option("--runs", runs, "seeds per n").range(1, 1000000);
     o.option("--seed", seed, "first seed");

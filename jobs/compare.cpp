@@ -5,11 +5,13 @@
 namespace tripack::jobs {
 
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search, const pipeline::BuildSettings& settings) {
+                                           BilliardsSearch search,
+                                           const pipeline::BuildSettings& settings) {
   const auto start = Clock::now();
   ConstructedVsBilliards result;
   result.n = n;
-  if (!catalogue.classify(n).empty()) result.constructed = pipeline::build_best_for_n(catalogue, n, settings);
+  if (!catalogue.classify(n).empty())
+    result.constructed = pipeline::build_best_for_n(catalogue, n, settings);
   if (search.scene.n == 0) search.scene = default_scene(static_cast<int>(n));
   prepare_scene(catalogue, search.scene, n);
   result.billiards = search_billiards(search);

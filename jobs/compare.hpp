@@ -1,6 +1,6 @@
-// Constructed vs billiards for one n (docs/certified.md step 6): the catalogue's best builder against the
-// best packing a billiards search finds: d difference, bonds, rattlers, and whether the contact
-// graphs agree up to the triangle's 6 symmetries.
+// Constructed vs billiards for one n (docs/certified.md step 6): the catalogue's best builder
+// against the best packing a billiards search finds: d difference, bonds, rattlers, and whether the
+// contact graphs agree up to the triangle's 6 symmetries.
 #pragma once
 
 #include <optional>
@@ -24,6 +24,7 @@ struct ConstructedVsBilliards {
 
 // `search.scene` may be left empty: the default scene for n is used then.
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search, const pipeline::BuildSettings& settings);
+                                           BilliardsSearch search,
+                                           const pipeline::BuildSettings& settings);
 
 }  // namespace tripack::jobs

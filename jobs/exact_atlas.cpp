@@ -12,8 +12,8 @@
 #include "core/io.hpp"
 #include "core/timing.hpp"
 #include "exact/certificate.hpp"
-#include "pipeline/build.hpp"
 #include "jobs/atlas_files.hpp"
+#include "pipeline/build.hpp"
 #include "runner/runner.hpp"
 
 namespace tripack::jobs {
@@ -222,9 +222,9 @@ pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& req
   const std::size_t count = from_files ? request.files.size() : members.size();
   for (std::size_t i = 0; i < count; ++i) {
     run.packings.push_back(
-        from_files ? pipeline::exact_of_file(request.files[i], request.exact)
-                   : pipeline::exact_of_packing(members[i].second, members[i].first, {},
-                                                request.exact));
+        from_files
+            ? pipeline::exact_of_file(request.files[i], request.exact)
+            : pipeline::exact_of_packing(members[i].second, members[i].first, {}, request.exact));
     const auto& r = run.packings.back();
     if (dir.empty() || !r.configuration || !r.configuration->proven) continue;
     // A class member's name ("four-delta k=3") as a label the checker accepts: "four-delta_k3".

@@ -44,8 +44,8 @@ struct ExactAtlasSettings {
 };
 
 struct ExactAtlasResult {
-  std::size_t rows = 0;     // in the atlas (after the n filter)
-  std::size_t skipped = 0;  // already in atlas-exact.csv
+  std::size_t rows = 0;                     // in the atlas (after the n filter)
+  std::size_t skipped = 0;                  // already in atlas-exact.csv
   std::vector<pipeline::ExactResult> done;  // this call's rows, in finishing order
   bool cancelled = false;
   double seconds = 0;

@@ -11,9 +11,9 @@
 
 #include "core/conventions.hpp"
 #include "core/timing.hpp"
+#include "pipeline/catalogue_checks.hpp"
 #include "runner/runner.hpp"
 #include "search/search.hpp"
-#include "pipeline/catalogue_checks.hpp"
 
 namespace tripack::jobs {
 

@@ -1,4 +1,3 @@
-#include "formats/formats.hpp"
 #include "jobs/import.hpp"
 
 #include <fmt/format.h>
@@ -10,9 +9,10 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "core/timing.hpp"
-#include "runner/runner.hpp"
+#include "formats/formats.hpp"
 #include "jobs/stored.hpp"
 #include "pipeline/analyze.hpp"
+#include "runner/runner.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::jobs {

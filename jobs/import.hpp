@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "core/options.hpp"
 #include "core/conventions.hpp"
+#include "core/options.hpp"
 #include "core/progress.hpp"
 
 namespace tripack::jobs {

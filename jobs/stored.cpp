@@ -2,13 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <ostream>
-#include <algorithm>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/io.hpp"
@@ -173,9 +173,9 @@ RecordedSearch search_and_record(search::SearchRequest request, const std::strin
   if (store)
     for (std::size_t c = 0; c < result.chains.size(); ++c)
       if (!store->record(run_record_of(result, c, tool_version)))
-        recorded.notes.push_back(fmt::format(
-            "{} already holds n = {} seed = {} ({}); not recorded again", db, request.n,
-            result.chains[c].seed, search::search_method(result.request)));
+        recorded.notes.push_back(
+            fmt::format("{} already holds n = {} seed = {} ({}); not recorded again", db, request.n,
+                        result.chains[c].seed, search::search_method(result.request)));
   return recorded;
 }
 

@@ -88,8 +88,9 @@ struct DbExport {
     o.option("N", n, "number of disks").required().range(2, 1e8);
     o.option("--db", db, "results database");
     o.option("--format", format,
-             "one of " + format_names() + " (records: i x y with d, r, S in the header); "
-             "default: -o's extension, else txt");
+             "one of " + format_names() +
+                 " (records: i x y with d, r, S in the header); "
+                 "default: -o's extension, else txt");
     o.option("--convention", convention, kConventionHelp);
     o.option("--rank", rank, "which packing: 1 = the best").range(1, 1e9);
     o.flag("--all", all, "every stored packing of N (not with --rank)");

@@ -48,10 +48,13 @@ store::StoredPacking decode_packing(const nlohmann::json& j) {
 }  // namespace
 
 std::string encode_run(const store::RunRecord& run) {
-  nlohmann::json j = {
-      {"n", run.n},           {"seed", run.seed},       {"method", run.method},
-      {"outcome", run.outcome},
-      {"events", run.events}, {"seconds", run.seconds}, {"tool_version", run.tool_version}};
+  nlohmann::json j = {{"n", run.n},
+                      {"seed", run.seed},
+                      {"method", run.method},
+                      {"outcome", run.outcome},
+                      {"events", run.events},
+                      {"seconds", run.seconds},
+                      {"tool_version", run.tool_version}};
   if (run.packing) j["packing"] = encode_packing(*run.packing);
   // Outcomes carry exception texts: never let a stray byte make the dump throw.
   return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

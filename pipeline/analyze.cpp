@@ -1,4 +1,3 @@
-#include "formats/formats.hpp"
 #include "pipeline/analyze.hpp"
 
 #include <fmt/format.h>
@@ -7,11 +6,12 @@
 #include <cmath>
 #include <limits>
 
+#include "analysis/compare.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
 #include "core/points.hpp"
 #include "core/timing.hpp"
-#include "analysis/compare.hpp"
+#include "formats/formats.hpp"
 
 namespace tripack::pipeline {
 
@@ -40,7 +40,9 @@ std::string Analysis::status() const {
   return "certified: rigid with a strictly positive stress (strict local optimum of d)";
 }
 
-std::string Analysis::d_string(int digits) const { return record_of(*this).d.str(digits); }
+std::string Analysis::d_string(int digits) const {
+  return record_of(*this).d.str(digits);
+}
 
 void apply_multiprecision(PackingRecord& record, const MultiprecisionPolish& polish) {
   if (!polish.converged) return;
@@ -89,8 +91,7 @@ long double smallest_gap(const Pattern& pat) {
 // where it is massively degenerate) changes nothing. Returns false, with `a` untouched, when the
 // start does not certify this way: the full pipeline then runs.
 // Reports a stage's start (or a step in it) when someone listens.
-void tell(const ProgressFn& progress, const std::string& stage, int step = 0,
-          long double d = 0) {
+void tell(const ProgressFn& progress, const std::string& stage, int step = 0, long double d = 0) {
   if (!progress) return;
   Progress p;
   p.stage = stage;
@@ -268,7 +269,8 @@ std::string FileAnalysis::value_string(int wanted) const {
   if (convention == Convention::UnitTriangle) return d_string(wanted);
   if (high_digits(analysis, wanted) && !mp_value_in_convention.empty())
     return mp_value_in_convention;
-  return format_significant(from_d(analysis.pattern.packing.d, convention), std::min(wanted, kLongDoubleDigits));
+  return format_significant(from_d(analysis.pattern.packing.d, convention),
+                            std::min(wanted, kLongDoubleDigits));
 }
 
 FileAnalysis analyze_file(const AnalyzeRequest& request) {
@@ -278,9 +280,9 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   const auto start = Clock::now();
   PointsFile file = read_packing_file(request.file);
   result.layout = file.layout;
-  PointsReading reading =
-      packing_from_points(std::move(file), request.convention,
-                          request.expected_n ? std::optional<long long>(request.expected_n) : std::nullopt);
+  PointsReading reading = packing_from_points(
+      std::move(file), request.convention,
+      request.expected_n ? std::optional<long long>(request.expected_n) : std::nullopt);
   // As read: the file's declared convention, radius for an x y r file.
   result.convention = reading.convention;
   result.warnings = std::move(reading.warnings);

@@ -1,4 +1,5 @@
-// The analysis pipeline (docs/certified.md): relax -> bonds (+ polish) -> rattlers -> rigidity -> stress
+// The analysis pipeline (docs/certified.md): relax -> bonds (+ polish) -> rattlers -> rigidity ->
+// stress
 // -> optional multiprecision, with the time of each stage. `build`, `analyze` and the billiards
 // search all use it.
 #pragma once
@@ -8,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "core/options.hpp"
 #include "analysis/bonds.hpp"
 #include "analysis/certify.hpp"
 #include "analysis/interior_relax.hpp"
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
+#include "core/options.hpp"
 #include "core/packing.hpp"
 #include "core/progress.hpp"
 #include "core/record.hpp"

@@ -385,7 +385,7 @@ int refine(const FixedJacobian& J, const Eigen::SPQR<bond_system::SpMat>& qr,
     if (!(cmax > 0) || !std::isfinite(cmax)) break;
     int cexp = 0;
     std::frexp(cmax, &cexp);
-    const mpfr_exp_t correction = cexp + es;  // the correction is below 2^correction
+    const mpfr_exp_t correction = cexp + es;      // the correction is below 2^correction
     if (sweeps > 0 && correction >= last) break;  // not halving: dropped
     if (sweeps > 0) gain = last - correction;
     // The correction c 2^es = ci 2^ce with |ci| <= 2^61 (so a difference of two fits a long).

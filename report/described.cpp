@@ -1,10 +1,10 @@
 #include "report/described.hpp"
 
-#include "report/render.hpp"
-
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
+
+#include "report/render.hpp"
 
 namespace tripack::report {
 
@@ -38,7 +38,8 @@ void write_description(std::ostream& out, const Tree& description, const std::st
 Tree tree_of(const Described& result) {
   Tree tree;
   tree["result"] = result.title;
-  for (const auto& f : result.fields) tree[f.name] = f.number ? Tree::parse(f.value) : Tree(f.value);
+  for (const auto& f : result.fields)
+    tree[f.name] = f.number ? Tree::parse(f.value) : Tree(f.value);
   return tree;
 }
 
@@ -47,8 +48,7 @@ void write_json_description(std::ostream& out, const std::string& json_text,
   write_description(out, Tree::parse(json_text), format);
 }
 
-void render(std::ostream& out, const Described& result, OutputFormat format,
-            const RenderOptions&) {
+void render(std::ostream& out, const Described& result, OutputFormat format, const RenderOptions&) {
   write_description(
       out, tree_of(result),
       format == OutputFormat::Json ? "json" : (format == OutputFormat::Csv ? "csv" : "text"));

@@ -25,8 +25,7 @@ void write_value(std::ostream& out, const Tree& value, const std::string& indent
         out << indent << "-\n";
         write_value(out, item, indent + "  ");
       } else {
-        out << indent << "- " << (item.is_string() ? item.get<std::string>() : item.dump())
-            << "\n";
+        out << indent << "- " << (item.is_string() ? item.get<std::string>() : item.dump()) << "\n";
       }
     }
   } else {

@@ -1,7 +1,7 @@
-// Packing diagrams drawn like Graham & Lubachevsky's figures (docs/formats.md): the container triangle,
-// shaded disks, unshaded rattlers, a dot at every bond (disk-disk and disk-wall), disk indices,
-// and a caption with the label and d. Optionally the stress certificate's bond forces as line
-// widths, which shows why the packing is locally optimal.
+// Packing diagrams drawn like Graham & Lubachevsky's figures (docs/formats.md): the container
+// triangle, shaded disks, unshaded rattlers, a dot at every bond (disk-disk and disk-wall), disk
+// indices, and a caption with the label and d. Optionally the stress certificate's bond forces as
+// line widths, which shows why the packing is locally optimal.
 #pragma once
 
 #include <string>

@@ -1,4 +1,3 @@
-#include "formats/formats.hpp"
 #include "report/explore_report.hpp"
 
 #include <fmt/format.h>
@@ -12,6 +11,7 @@
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "formats/formats.hpp"
 #include "report/diagram.hpp"
 #include "report/fields.hpp"
 #include "report/plot.hpp"
@@ -510,7 +510,7 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
   }
   say("index.html");
   write_whole_file(dir / "index.html",
-             html_page(result, options.diagrams, options.forces, options.atlas));
+                   html_page(result, options.diagrams, options.forces, options.atlas));
 }
 
 }  // namespace tripack::report

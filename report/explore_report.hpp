@@ -4,8 +4,8 @@
 #pragma once
 
 #include <filesystem>
-#include <map>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,10 +20,10 @@ namespace tripack::report {
 // in the delta(n) plot (grey dots), a table, a diagram per n, the n where it beats every
 // builder; its table and files are copied into DIR/atlas/ so the report stays self-contained.
 struct ExploreAtlas {
-  std::filesystem::path csv;              // where atlas.csv was read
-  std::vector<PackingRecord> rows;        // every row as read (no bonds: files keep none)
-  std::vector<PackingRecord> best;        // the rank-1 rows, read back and analysed
-  std::vector<jobs::AtlasGap> gaps;   // atlas-gaps.csv beside it (empty if absent)
+  std::filesystem::path csv;         // where atlas.csv was read
+  std::vector<PackingRecord> rows;   // every row as read (no bonds: files keep none)
+  std::vector<PackingRecord> best;   // the rank-1 rows, read back and analysed
+  std::vector<jobs::AtlasGap> gaps;  // atlas-gaps.csv beside it (empty if absent)
   // atlas-exact.csv beside it, by label (empty if absent): P's degree, the proof, certificates in
   // exact/ (docs/exact.md).
   std::map<std::string, jobs::ExactAtlasRow> exact;

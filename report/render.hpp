@@ -12,16 +12,16 @@
 #include <string>
 
 #include "constructors/catalogue.hpp"
-#include "pipeline/analyze.hpp"
 #include "jobs/billiards_search.hpp"
+#include "jobs/compare.hpp"
+#include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "pipeline/exact.hpp"
-#include "jobs/compare.hpp"
-#include "search/search.hpp"
 #include "report/atlas_report.hpp"
 #include "report/campaign_report.hpp"
 #include "report/described.hpp"
+#include "search/search.hpp"
 
 namespace tripack::report {
 
@@ -60,12 +60,9 @@ void render_text(std::ostream& out, const pipeline::ExactRun& r, const RenderOpt
 void render_json(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
 void render_csv(std::ostream& out, const pipeline::ExactRun& r, const RenderOptions& o);
 
-void render_text(std::ostream& out, const jobs::BilliardsSearchResult& r,
-                 const RenderOptions& o);
-void render_json(std::ostream& out, const jobs::BilliardsSearchResult& r,
-                 const RenderOptions& o);
-void render_csv(std::ostream& out, const jobs::BilliardsSearchResult& r,
-                const RenderOptions& o);
+void render_text(std::ostream& out, const jobs::BilliardsSearchResult& r, const RenderOptions& o);
+void render_json(std::ostream& out, const jobs::BilliardsSearchResult& r, const RenderOptions& o);
+void render_csv(std::ostream& out, const jobs::BilliardsSearchResult& r, const RenderOptions& o);
 
 // `tripack search`: the best packing (certified, seconds_to_best), the distinct packings by rank,
 // the chains.
@@ -73,12 +70,9 @@ void render_text(std::ostream& out, const search::SearchResult& r, const RenderO
 void render_json(std::ostream& out, const search::SearchResult& r, const RenderOptions& o);
 void render_csv(std::ostream& out, const search::SearchResult& r, const RenderOptions& o);
 
-void render_text(std::ostream& out, const jobs::ConstructedVsBilliards& c,
-                 const RenderOptions& o);
-void render_json(std::ostream& out, const jobs::ConstructedVsBilliards& c,
-                 const RenderOptions& o);
-void render_csv(std::ostream& out, const jobs::ConstructedVsBilliards& c,
-                const RenderOptions& o);
+void render_text(std::ostream& out, const jobs::ConstructedVsBilliards& c, const RenderOptions& o);
+void render_json(std::ostream& out, const jobs::ConstructedVsBilliards& c, const RenderOptions& o);
+void render_csv(std::ostream& out, const jobs::ConstructedVsBilliards& c, const RenderOptions& o);
 
 // The one dispatch point: a result in the chosen format.
 template <class Result>

@@ -1,6 +1,6 @@
 // The runner's MPI messages (OpenMPI): a worker sends tag kReport (its last item's result, empty
-// at first); rank 0 answers tag kItem (the item's index) or tag kStop. Rank 0 polls with MPI_Iprobe and
-// sleeps between polls, so waiting for workers costs no core while its own threads compute.
+// at first); rank 0 answers tag kItem (the item's index) or tag kStop. Rank 0 polls with MPI_Iprobe
+// and sleeps between polls, so waiting for workers costs no core while its own threads compute.
 #include <mpi.h>
 
 #include <cstdint>

@@ -19,6 +19,7 @@ PKGS=(
   sqlite3              # an independent reader of that database in the soak and MPI tests
   libopenmpi-dev openmpi-bin  # campaigns beyond one machine: mpirun -np P tripack campaign ...
   clang libclang-rt-14-dev    # libFuzzer + ASan/UBSan for scripts/fuzz.sh (CI runs a smoke)
+  clang-format         # the format test: every source as .clang-format writes it
   fonts-dejavu-core    # the diagrams' font, named explicitly so labels look the same everywhere
   gnuplot-nox          # draws the delta(n) and accuracy plots (svg, pngcairo, pdfcairo terminals)
   libgtest-dev googletest libbenchmark-dev

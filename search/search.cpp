@@ -12,9 +12,9 @@
 
 #include "core/ranking.hpp"
 #include "core/timing.hpp"
-#include "runner/runner.hpp"
 #include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
+#include "runner/runner.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
 

@@ -1,4 +1,5 @@
-// Lubachevsky–Stillinger billiards of growing disks in the equilateral triangle (docs/billiards.md).
+// Lubachevsky–Stillinger billiards of growing disks in the equilateral triangle
+// (docs/billiards.md).
 //
 // Event-driven: disk–disk and disk–wall collisions of disks whose diameter grows as
 // diam(t) = diam0 + rate t, predicted exactly (cancellation-free quadratic roots), a cell list with
@@ -6,9 +7,9 @@
 // are compiled into the engine that runs it (growth, thermostat, pinned disks).
 //
 // Coordinates: the engine works in the unit triangle as the CONTAINER (disks inside it). The
-// result's Packing is in the Packing convention (docs/conventions.md): centres mapped from the centres'
-// triangle (the container inset by diam / 2) onto the unit triangle, d = diam / (1 - sqrt3 diam).
-// (For n = 1 that triangle shrinks to a point: use `diameter`, which tends to 1/sqrt3.)
+// result's Packing is in the Packing convention (docs/conventions.md): centres mapped from the
+// centres' triangle (the container inset by diam / 2) onto the unit triangle, d = diam / (1 - sqrt3
+// diam). (For n = 1 that triangle shrinks to a point: use `diameter`, which tends to 1/sqrt3.)
 #pragma once
 
 #include <cstdint>

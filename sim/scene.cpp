@@ -1,4 +1,3 @@
-#include "formats/formats.hpp"
 #include "sim/scene.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -14,6 +13,7 @@
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
+#include "formats/formats.hpp"
 #include "sim/effect_list.hpp"
 #include "sim/scene_yaml.hpp"
 

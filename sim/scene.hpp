@@ -1,5 +1,5 @@
-// Billiards scenes (docs/billiards.md): the container, the number of disks, the initial state and the effects
-// a run needs. A scene is plain data; sim/billiards.hpp runs it.
+// Billiards scenes (docs/billiards.md): the container, the number of disks, the initial state and
+// the effects a run needs. A scene is plain data; sim/billiards.hpp runs it.
 //
 // YAML form (every key but n optional):
 //   container: triangle

@@ -7,10 +7,10 @@
 #include <map>
 #include <string>
 
+#include "jobs/billiards_search.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/stored.hpp"
 #include "jobs/work_unit.hpp"
-#include "jobs/billiards_search.hpp"
 
 namespace tripack::jobs {
 namespace {
@@ -127,7 +127,8 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
   request.n_first = 0;
   request.n_last = 1;
   request.db = fresh_db("never.db");
-  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), nullptr, {}), std::invalid_argument);
+  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), nullptr, {}),
+               std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(request.db));  // checked before the database is made
 }
 

@@ -8,10 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "formats/formats.hpp"
 #include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
+#include "formats/formats.hpp"
 #include "jobs/explore.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/catalogue_checks.hpp"

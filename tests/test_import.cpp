@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "constructors/catalogue.hpp"
+#include "core/io.hpp"
+#include "core/points.hpp"
 #include "formats/formats.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/import.hpp"
 #include "jobs/stored.hpp"
-#include "constructors/catalogue.hpp"
-#include "core/io.hpp"
-#include "core/points.hpp"
 #include "pipeline/build.hpp"
 
 namespace tripack::jobs {
@@ -50,7 +50,11 @@ const Catalogue& catalogue() {
 std::string built_file(const std::string& class_id, long k, const std::string& name) {
   const auto built = pipeline::build_and_certify(catalogue(), {class_id, k, 0, ""}, {});
   const std::string path = (scratch() / name).string();
-  std::ofstream(path) << [&] { std::ostringstream s; write_text(s, built.pattern); return s.str(); }();
+  std::ofstream(path) << [&] {
+    std::ostringstream s;
+    write_text(s, built.pattern);
+    return s.str();
+  }();
   return path;
 }
 
@@ -235,7 +239,11 @@ std::string hexagon_with_moved_disk(const std::string& name, double shift) {
   const Vec2L dir = (p.packing.points[towards] - p.packing.points[moved]) / closest;
   p.packing.points[moved] += dir * (static_cast<long double>(shift) * p.packing.d);
   const std::string path = (scratch() / name).string();
-  std::ofstream(path) << [&] { std::ostringstream s; write_text(s, p); return s.str(); }();
+  std::ofstream(path) << [&] {
+    std::ostringstream s;
+    write_text(s, p);
+    return s.str();
+  }();
   return path;
 }
 

@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <string>
 
-#include "formats/formats.hpp"
 #include "core/io.hpp"
 #include "core/neighbours.hpp"
-#include "search/search.hpp"
+#include "formats/formats.hpp"
 #include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
+#include "search/search.hpp"
 
 namespace tripack {
 namespace {

@@ -293,8 +293,8 @@ TEST(Io, CsvHeaderNamesTheColumns) {
 }
 
 TEST(Io, JsonShapes) {
-  const PointsFile objects = read_text(
-      R"({"points": [{"x": 0.25, "y": "0.5"}, {"y": 0.125, "x": 0.75}]})", "json");
+  const PointsFile objects =
+      read_text(R"({"points": [{"x": 0.25, "y": "0.5"}, {"y": 0.125, "x": 0.75}]})", "json");
   EXPECT_EQ(objects.layout, "json points");
   ASSERT_EQ(objects.points.size(), 2u);
   EXPECT_EQ(objects.points[1], Vec2L(0.75L, 0.125L));
@@ -302,8 +302,7 @@ TEST(Io, JsonShapes) {
   EXPECT_EQ(list.layout, "json list");
   EXPECT_EQ(list.points[1], Vec2L(0.75L, 0.125L));
   // Numbers are parsed to long double, not through double.
-  const PointsFile precise =
-      read_text(R"([[0.179396908611865979561, 0.1], [0.2, 0.3]])", "json");
+  const PointsFile precise = read_text(R"([[0.179396908611865979561, 0.1], [0.2, 0.3]])", "json");
   EXPECT_EQ(precise.points[0].x, 0.179396908611865979561L);
   EXPECT_NE(precise.points[0].x, static_cast<long double>(0.179396908611865979561));
 }
@@ -326,7 +325,8 @@ TEST(PreciseReal, RoundsItsTextHalfUpAndNeverClaimsMoreDigitsThanItHas) {
   EXPECT_EQ(PreciseReal(1, "0.999999999999999999999999999999", 30).str(20),
             "1.0000000000000000000");
   // More digits than known: what is known, not more.
-  EXPECT_EQ(PreciseReal(0.5L, "0.50000000000000000000001", 23).str(40), "0.50000000000000000000001");
+  EXPECT_EQ(PreciseReal(0.5L, "0.50000000000000000000001", 23).str(40),
+            "0.50000000000000000000001");
   EXPECT_EQ(PreciseReal(0.25L).str(30), format_significant(0.25L, kLongDoubleDigits));
   EXPECT_EQ(significant_digits("-0.000120"), 3);
 }

@@ -31,8 +31,8 @@ const std::map<std::string, std::set<std::string>>& allowed_includes() {
     a["runner"] = {"core", "runner"};
     a["formats"] = {"core", "polish", "formats"};
     a["patterns"] = {"core", "polish", "constructors", "analysis", "patterns"};
-    a["pipeline"] = {"core", "polish", "formats", "constructors", "analysis",
-                     "patterns", "sim", "exact", "pipeline"};
+    a["pipeline"] = {"core",     "polish", "formats", "constructors", "analysis",
+                     "patterns", "sim",    "exact",   "pipeline"};
     // A chain from here: each layer may include itself and everything below it.
     const char* chain[] = {"pipeline", "search", "store", "jobs", "report", "commands"};
     for (std::size_t i = 1; i < std::size(chain); ++i) {
@@ -75,9 +75,9 @@ TEST(Layers, EveryIncludePointsDown) {
   const auto violations = layer_violations(TRIPACK_SOURCE_DIR);
   for (const auto& v : violations) ADD_FAILURE() << v;
   // The check saw the tree: each layer directory exists.
-  for (const char* layer : {"core", "polish", "constructors", "analysis", "patterns", "sim",
-                            "exact", "runner", "formats", "pipeline", "search", "store", "jobs", "report",
-                            "commands", "app"})
+  for (const char* layer :
+       {"core", "polish", "constructors", "analysis", "patterns", "sim", "exact", "runner",
+        "formats", "pipeline", "search", "store", "jobs", "report", "commands", "app"})
     EXPECT_TRUE(fs::is_directory(fs::path(TRIPACK_SOURCE_DIR) / layer)) << layer;
 }
 

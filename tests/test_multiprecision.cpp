@@ -284,8 +284,7 @@ TEST(Multiprecision, T13aTo3000DigitsIsARootOfGL1995Quartic) {
   }
   mpfr_set_si(bound.v, -2990, MPFR_RNDN);
   mpfr_exp10(bound.v, bound.v, MPFR_RNDN);
-  EXPECT_LT(mpfr_cmpabs(p.v, bound.v), 0)
-      << "log10 |p(d)| = " << mpfr_get_d(p.v, MPFR_RNDN);
+  EXPECT_LT(mpfr_cmpabs(p.v, bound.v), 0) << "log10 |p(d)| = " << mpfr_get_d(p.v, MPFR_RNDN);
 }
 
 // Deep precision against a closed form: d(4Delta(3)) = 1/(4 + sqrt3) to 10,000 digits.

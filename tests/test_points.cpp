@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "formats/formats.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
+#include "formats/formats.hpp"
 #include "near_long_double.hpp"
 
 namespace tripack {

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "runner/runner.hpp"
 #include "report/progress_line.hpp"
+#include "runner/runner.hpp"
 
 namespace tripack::jobs {
 namespace {

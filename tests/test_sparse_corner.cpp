@@ -6,13 +6,13 @@
 #include <random>
 #include <string>
 
-#include "formats/formats.hpp"
 #include "analysis/compare.hpp"
 #include "constructors/builders.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/io.hpp"
 #include "core/points.hpp"
+#include "formats/formats.hpp"
 #include "pipeline/analyze.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"

@@ -33,7 +33,8 @@ void expect_reproduces(const AtlasBest& best) {
   const auto b = pipeline::build_and_certify(catalogue(), {best.class_id, best.k, best.p, ""}, {});
   ASSERT_TRUE(b.analysis) << best.label;
   EXPECT_TRUE(b.verified()) << best.label << ": " << b.analysis->status();
-  // 1e-15: the tolerance docs/classes.md asks of a builder's d; the long double polish resolves d to ~1e-19.
+  // 1e-15: the tolerance docs/classes.md asks of a builder's d; the long double polish resolves d
+  // to ~1e-19.
   EXPECT_LT(std::fabs(b.record.d.value() / best.d - 1), 1e-15L) << best.label;
   EXPECT_EQ(b.analysis->pattern.bonds.size(), best.bonds) << best.label;
   EXPECT_EQ(b.analysis->pattern.rattlers.size(), best.rattlers) << best.label;
