@@ -10,6 +10,10 @@ namespace tripack::commands {
 namespace {
 
 class Classes : public Command {
+ public:
+  static constexpr CommandInfo kInfo{"classes", "List the catalogue of classes", false};
+
+ private:
   Output out;
 
  public:
@@ -21,6 +25,11 @@ class Classes : public Command {
 };
 
 class Classify : public Command {
+ public:
+  static constexpr CommandInfo kInfo{"classify", "Every (class, k[, p]) whose n(k) equals N",
+                                     false};
+
+ private:
   long long n = 0;
   Output out;
 
@@ -36,6 +45,11 @@ class Classify : public Command {
 };
 
 class Table : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "table", "Build, polish and certify the first terms of every class", false};
+
+ private:
   long k_count = 4;
   Output out;
 
@@ -53,6 +67,11 @@ class Table : public Command {
 };
 
 class CheckFormula : public Command {
+ public:
+  static constexpr CommandInfo kInfo{"check-formula",
+                                     "Compare built d with the catalogue's closed form", false};
+
+ private:
   std::string class_id;
   std::pair<long long, long long> k;
   long p = 0;
@@ -78,17 +97,8 @@ class CheckFormula : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_classes() {
-  return std::make_unique<Classes>();
-}
-std::unique_ptr<Command> make_classify() {
-  return std::make_unique<Classify>();
-}
-std::unique_ptr<Command> make_table() {
-  return std::make_unique<Table>();
-}
-std::unique_ptr<Command> make_check_formula() {
-  return std::make_unique<CheckFormula>();
+std::vector<CommandEntry> catalogue_commands() {
+  return {entry<Classes>(), entry<Classify>(), entry<Table>(), entry<CheckFormula>()};
 }
 
 }  // namespace tripack::commands

@@ -1,6 +1,7 @@
 // A tripack command: its options, bound to the fields of the request it runs, and its run. The
-// command table (commands/table.cpp) lists every command once, with whether it is a long job
-// (stops between items on Ctrl-C or SIGTERM, exit 130); app/ only parses and dispatches.
+// command table (commands/table.cpp, family by family) lists every command once, with whether it
+// is a long job (stops between items on Ctrl-C or SIGTERM, exit 130); app/ only parses and
+// dispatches.
 #pragma once
 
 #include <functional>
@@ -29,12 +30,25 @@ class Command {
 
 inline constexpr int kCancelledExit = 130;
 
+// What the help shows of a command, and whether it is a long job: each command class's kInfo.
+struct CommandInfo {
+  const char* name;  // "build"; "db export" is the subcommand export of the group db
+  const char* summary;
+  bool long_job;
+};
+
 struct CommandEntry {
-  std::string name;  // "build"; "db export" is the subcommand export of the group db
+  std::string name;
   std::string summary;
   bool long_job = false;
   std::function<std::unique_ptr<Command>()> make;
 };
+
+// A command class's entry in the table: its kInfo and its factory.
+template <class C>
+CommandEntry entry() {
+  return {C::kInfo.name, C::kInfo.summary, C::kInfo.long_job, [] { return std::make_unique<C>(); }};
+}
 
 // Every command, in the order the help lists them.
 const std::vector<CommandEntry>& command_table();

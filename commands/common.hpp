@@ -51,6 +51,20 @@ struct Diagrams {
             const std::vector<long double>& forces) const;
 };
 
+// A command whose options are its request's and the output format's.
+template <class Request, bool kWithPoints = false>
+class RequestCommand : public Command {
+ protected:
+  Request request;
+  Output out;
+
+ public:
+  void declare(OptionList& o) override {
+    request.declare(o);
+    out.declare(o, kWithPoints);
+  }
+};
+
 // Rendered into a buffer first, so that a formatting failure cannot leave half a result: then the
 // text rendering (which cannot fail on content) is printed instead, and the error reported.
 template <class Result>

@@ -16,6 +16,11 @@ namespace {
 constexpr const char* kDbHelp = "results database";
 
 class DbBest : public Command {
+ public:
+  static constexpr CommandInfo kInfo{"db best",
+                                     "One line per n: n, the best certified d, its label", false};
+
+ private:
   std::string db = "tripack.db";
   long long n = 0;  // 0: every n
   Output out;
@@ -37,6 +42,14 @@ class DbBest : public Command {
 };
 
 class DbCheck : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "db check",
+      "Integrity check and counts: runs, values of n, packings, duplicates (exit 1 if the "
+      "check fails or there are duplicates)",
+      false};
+
+ private:
   std::string db = "tripack.db";
   Output out;
 
@@ -64,6 +77,12 @@ class DbCheck : public Command {
 };
 
 class DbExport : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "db export", "The stored packings of N as coordinate files (best first: rank 1 is tNa)",
+      false};
+
+ private:
   jobs::DbExport request;
 
  public:
@@ -74,15 +93,15 @@ class DbExport : public Command {
   }
 };
 
-class DbImport : public Command {
-  jobs::ImportRequest request;
-  Output out;
-
+class DbImport : public RequestCommand<jobs::ImportRequest> {
  public:
-  void declare(OptionList& o) override {
-    request.declare(o);
-    out.declare(o);
-  }
+  static constexpr CommandInfo kInfo{
+      "db import",
+      "Read packing files (any layout of 'analyze'), certify them like 'analyze' and store "
+      "them; a file with overlapping disks or a packing that does not certify is refused and "
+      "nothing is stored",
+      true};
+
   int run(const Context& c) override {
     request.cancel = c.cancel;
     request.tool_version = tool_version();
@@ -100,6 +119,14 @@ class DbImport : public Command {
 };
 
 class DbPrune : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "db prune",
+      "Keep the best K packings of every n (the runs stay, so the campaign still skips them) "
+      "and compact the file: for keeping or committing a long campaign's database",
+      false};
+
+ private:
   std::string db = "tripack.db";
   long long keep = 0;  // packings kept per n
   std::pair<long long, long long> n{0, std::numeric_limits<long long>::max()};
@@ -122,20 +149,9 @@ class DbPrune : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_db_best() {
-  return std::make_unique<DbBest>();
-}
-std::unique_ptr<Command> make_db_check() {
-  return std::make_unique<DbCheck>();
-}
-std::unique_ptr<Command> make_db_export() {
-  return std::make_unique<DbExport>();
-}
-std::unique_ptr<Command> make_db_import() {
-  return std::make_unique<DbImport>();
-}
-std::unique_ptr<Command> make_db_prune() {
-  return std::make_unique<DbPrune>();
+std::vector<CommandEntry> db_commands() {
+  return {entry<DbBest>(), entry<DbCheck>(), entry<DbExport>(), entry<DbImport>(),
+          entry<DbPrune>()};
 }
 
 }  // namespace tripack::commands

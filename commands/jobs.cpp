@@ -22,6 +22,14 @@ namespace tripack::commands {
 namespace {
 
 class Explore : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "explore",
+      "The main job: build and certify every class member up to --max-n, billiards for small "
+      "n, compare, and write a report directory (delta(n) plot, diagrams, CSV/JSON, index.html)",
+      true};
+
+ private:
   jobs::ExploreSettings settings;
   std::string out = "report";
   std::string atlas;  // empty: the installed atlas when there is one; "none": no atlas
@@ -87,15 +95,15 @@ class Explore : public Command {
   }
 };
 
-class Campaign : public Command {
-  jobs::CampaignRequest request;
-  Output out;
-
+class Campaign : public RequestCommand<jobs::CampaignRequest, true> {
  public:
-  void declare(OptionList& o) override {
-    request.declare(o);
-    out.declare(o, true);
-  }
+  static constexpr CommandInfo kInfo{
+      "campaign",
+      "Billiards runs over a range of n as work units (n, seed) on threads, or on MPI ranks "
+      "when started by mpirun (rank 0 hands out units and writes); every finished unit goes to "
+      "an SQLite database at once, and rerunning continues where it stopped",
+      true};
+
   int run(const Context& c) override {
     request.tool_version = tool_version();
     // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a
@@ -119,6 +127,15 @@ class Campaign : public Command {
 };
 
 class Atlas : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "atlas",
+      "The best certified packings of every n: a campaign's database and every builder whose "
+      "class contains n, certified anew, polished in MPFR, ranked and labelled; writes "
+      "DIR/atlas.csv and DIR/atlas/LABEL.txt",
+      true};
+
+ private:
   jobs::AtlasSettings settings;
   std::string db = "data/atlas.db";
   std::string out_dir = "data";
@@ -150,15 +167,14 @@ class Atlas : public Command {
   }
 };
 
-class Exact : public Command {
-  jobs::ExactRequest request;
-  Output out;
-
+class Exact : public RequestCommand<jobs::ExactRequest> {
  public:
-  void declare(OptionList& o) override {
-    request.declare(o);
-    out.declare(o);
-  }
+  static constexpr CommandInfo kInfo{
+      "exact",
+      "The minimal polynomial P of d (integer relation from D digits, confirmed from 2D, "
+      "proven irreducible, root isolated) and a proof that the exact configuration exists",
+      false};
+
   int run(const Context& c) override {
     const Catalogue catalogue = request.class_id.empty() ? Catalogue{} : load_catalogue(c);
     print_result(jobs::run_exact(catalogue, request), out);
@@ -166,21 +182,20 @@ class Exact : public Command {
   }
 };
 
-class ExactAtlas : public Command {
-  jobs::ExactAtlasSettings settings;
-  Output out;
-
+class ExactAtlas : public RequestCommand<jobs::ExactAtlasSettings> {
  public:
-  void declare(OptionList& o) override {
-    settings.declare(o);
-    out.declare(o);
-  }
+  static constexpr CommandInfo kInfo{
+      "exact-atlas",
+      "'exact' on every atlas row: DIR/atlas-exact.csv and DIR/exact/LABEL.gp, resumable (a "
+      "rerun skips the rows already in the table)",
+      true};
+
   int run(const Context& c) override {
-    if (settings.atlas.empty()) settings.atlas = data_directory() / "atlas.csv";
-    if (settings.out.empty()) settings.out = settings.atlas.parent_path();
-    writable_directory(settings.out.string());
+    if (request.atlas.empty()) request.atlas = data_directory() / "atlas.csv";
+    if (request.out.empty()) request.out = request.atlas.parent_path();
+    writable_directory(request.out.string());
     report::ProgressLine progress(std::cerr, job_line("exact-atlas", 1));
-    const auto result = jobs::build_exact_atlas(settings, c.cancel, progress.callback());
+    const auto result = jobs::build_exact_atlas(request, c.cancel, progress.callback());
     progress.finish();
     std::map<std::string, int> proofs;
     for (const auto& r : result.done) ++proofs[r.proof];
@@ -192,7 +207,7 @@ class ExactAtlas : public Command {
                      .number("existence", std::to_string(proofs["existence"]))
                      .number("none", std::to_string(proofs["none"]))
                      .number("seconds", fmt::format("{:.1f}", result.seconds))
-                     .text("table", (settings.out / "atlas-exact.csv").string()),
+                     .text("table", (request.out / "atlas-exact.csv").string()),
                  out);
     return result.cancelled ? cancelled("every finished row is in the table; rerun to continue")
                             : 0;
@@ -201,20 +216,8 @@ class ExactAtlas : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_explore() {
-  return std::make_unique<Explore>();
-}
-std::unique_ptr<Command> make_campaign() {
-  return std::make_unique<Campaign>();
-}
-std::unique_ptr<Command> make_atlas() {
-  return std::make_unique<Atlas>();
-}
-std::unique_ptr<Command> make_exact() {
-  return std::make_unique<Exact>();
-}
-std::unique_ptr<Command> make_exact_atlas() {
-  return std::make_unique<ExactAtlas>();
+std::vector<CommandEntry> jobs_commands() {
+  return {entry<Explore>(), entry<Campaign>(), entry<Atlas>(), entry<Exact>(), entry<ExactAtlas>()};
 }
 
 }  // namespace tripack::commands

@@ -32,6 +32,11 @@ void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
 }
 
 class Build : public Command {
+ public:
+  static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member",
+                                     false};
+
+ private:
   BuildRequest member{"", kUnsetK, 0, ""};
   long long n = 0;  // --n: the best builder for n
   pipeline::BuildSettings settings;
@@ -73,6 +78,20 @@ class Build : public Command {
 };
 
 class Analyze : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "analyze",
+      "Relax, find bonds and rattlers, test rigidity, certify a file of points.\n"
+      "Layouts (one point per line unless JSON; '#' lines are comments; indices are 0-based):\n"
+      "  x y        centres (default convention: unit-triangle, the side-1 triangle with\n"
+      "             vertices (0,0) (1,0) (1/2,sqrt3/2))\n"
+      "  x y r      circles of radius r (implies --convention radius)\n"
+      "  i x y      the record tables' style (i = 0..n-1 or 1..n, any order)\n"
+      "  CSV        with a header naming x, y (and index, r, rattler), or bare x,y rows\n"
+      "  JSON       {\"points\": [[x, y], ...]} or a bare list [[x, y], ...]",
+      false};
+
+ private:
   pipeline::AnalyzeRequest request;
   std::string output;
   Output out;
@@ -103,6 +122,14 @@ class Analyze : public Command {
 };
 
 class Draw : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "draw",
+      "Diagram of a packing (a points file, analysed; or a class member, built), like the "
+      "paper's figures: shaded disks, unshaded rattlers, bond dots, labels, d",
+      false};
+
+ private:
   std::string what;  // a points file, or a class id
   BuildRequest member{"", kUnsetK, 0, ""};
   std::optional<Convention> convention;
@@ -153,14 +180,8 @@ class Draw : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_build() {
-  return std::make_unique<Build>();
-}
-std::unique_ptr<Command> make_analyze() {
-  return std::make_unique<Analyze>();
-}
-std::unique_ptr<Command> make_draw() {
-  return std::make_unique<Draw>();
+std::vector<CommandEntry> packing_commands() {
+  return {entry<Build>(), entry<Analyze>(), entry<Draw>()};
 }
 
 }  // namespace tripack::commands

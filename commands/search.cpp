@@ -36,6 +36,11 @@ struct BilliardsRuns {
 };
 
 class Billiards : public Command {
+ public:
+  static constexpr CommandInfo kInfo{
+      "billiards", "Lubachevsky-Stillinger runs from random starts, certified and ranked", true};
+
+ private:
   BilliardsRuns runs;
   std::string output_dir;           // -o DIR: one coordinate file per distinct packing
   std::string file_format = "txt";  // of those files
@@ -78,15 +83,15 @@ class Billiards : public Command {
   }
 };
 
-class Compare : public Command {
-  BilliardsRuns runs;
-  Output out;
+class Compare : public RequestCommand<BilliardsRuns, true> {
+ public:
+  static constexpr CommandInfo kInfo{
+      "compare", "The catalogue's best builder for N against the best billiards packing", true};
+
+ private:
+  BilliardsRuns& runs = request;
 
  public:
-  void declare(OptionList& o) override {
-    runs.declare(o);
-    out.declare(o, true);
-  }
   int run(const Context& c) override {
     if (runs.n < 2) throw std::invalid_argument("compare needs N >= 2");
     const Catalogue catalogue = load_catalogue(c);
@@ -102,19 +107,24 @@ class Compare : public Command {
   }
 };
 
-class Search : public Command {
-  search::SearchRequest request;
+class Search : public RequestCommand<search::SearchRequest, true> {
+ public:
+  static constexpr CommandInfo kInfo{
+      "search",
+      "Basin-hopping search for the densest packing of N disks within a time budget: the best "
+      "packing (certified), when it was first reached, and the distinct packings by rank",
+      true};
+
+ private:
   std::string db;  // empty: start from nothing stored, record nothing
-  Output out;
   Diagrams diagrams;
 
  public:
   void declare(OptionList& o) override {
-    request.declare(o);
+    RequestCommand::declare(o);
     o.option("--db", db,
              "campaign database: continue from its best packings of N and record every chain "
              "as a unit (N, seed)");
-    out.declare(o, true);
     diagrams.declare(o);
   }
   int run(const Context& c) override {
@@ -136,14 +146,8 @@ class Search : public Command {
 
 }  // namespace
 
-std::unique_ptr<Command> make_billiards() {
-  return std::make_unique<Billiards>();
-}
-std::unique_ptr<Command> make_compare() {
-  return std::make_unique<Compare>();
-}
-std::unique_ptr<Command> make_search() {
-  return std::make_unique<Search>();
+std::vector<CommandEntry> search_commands() {
+  return {entry<Billiards>(), entry<Compare>(), entry<Search>()};
 }
 
 }  // namespace tripack::commands

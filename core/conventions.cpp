@@ -22,15 +22,8 @@ Convention convention_from_option(std::string_view name) {
 }
 
 std::string_view convention_name(Convention c) {
-  switch (c) {
-    case Convention::UnitTriangle:
-      return "unit-triangle";
-    case Convention::Radius:
-      return "radius";
-    case Convention::UnitDiskSide:
-      return "unit-disk-side";
-  }
-  return "?";
+  static constexpr std::string_view kNames[] = {"unit-triangle", "radius", "unit-disk-side"};
+  return kNames[static_cast<int>(c)];
 }
 
 long double radius_from_d(long double d) {
@@ -47,27 +40,13 @@ long double d_from_side(long double s) {
 }
 
 long double to_d(long double value, Convention c) {
-  switch (c) {
-    case Convention::UnitTriangle:
-      return value;
-    case Convention::Radius:
-      return d_from_radius(value);
-    case Convention::UnitDiskSide:
-      return d_from_side(value);
-  }
-  return value;
+  if (c == Convention::Radius) return d_from_radius(value);
+  return c == Convention::UnitDiskSide ? d_from_side(value) : value;
 }
 
 long double from_d(long double d, Convention c) {
-  switch (c) {
-    case Convention::UnitTriangle:
-      return d;
-    case Convention::Radius:
-      return radius_from_d(d);
-    case Convention::UnitDiskSide:
-      return side_from_d(d);
-  }
-  return d;
+  if (c == Convention::Radius) return radius_from_d(d);
+  return c == Convention::UnitDiskSide ? side_from_d(d) : d;
 }
 
 Vec2L point_in_convention(const Vec2L& p, long double d, Convention c) {

@@ -43,27 +43,21 @@ class ExpressionParser {
     e_.nodes_.push_back({k, std::move(name), std::move(args)});
     return static_cast<int>(e_.nodes_.size()) - 1;
   }
-  int sum() {
-    int lhs = product();
+  // One level of left-associative operators: operand (op operand)*, the operands one level down.
+  int left_associative(int (ExpressionParser::*operand)(), char op1, Kind k1, char op2, Kind k2) {
+    int lhs = (this->*operand)();
     for (;;) {
-      if (eat('+'))
-        lhs = push(Kind::Add, "", {lhs, product()});
-      else if (eat('-'))
-        lhs = push(Kind::Sub, "", {lhs, product()});
+      if (eat(op1))
+        lhs = push(k1, "", {lhs, (this->*operand)()});
+      else if (eat(op2))
+        lhs = push(k2, "", {lhs, (this->*operand)()});
       else
         return lhs;
     }
   }
+  int sum() { return left_associative(&ExpressionParser::product, '+', Kind::Add, '-', Kind::Sub); }
   int product() {
-    int lhs = unary();
-    for (;;) {
-      if (eat('*'))
-        lhs = push(Kind::Mul, "", {lhs, unary()});
-      else if (eat('/'))
-        lhs = push(Kind::Div, "", {lhs, unary()});
-      else
-        return lhs;
-    }
+    return left_associative(&ExpressionParser::unary, '*', Kind::Mul, '/', Kind::Div);
   }
   int unary() {
     struct Nesting {

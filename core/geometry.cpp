@@ -3,15 +3,8 @@
 namespace tripack {
 
 std::string_view side_name(Side s) {
-  switch (s) {
-    case Side::Bottom:
-      return "bottom";
-    case Side::Left:
-      return "left";
-    case Side::Right:
-      return "right";
-  }
-  return "?";
+  static constexpr std::string_view kNames[] = {"bottom", "left", "right"};
+  return kNames[static_cast<int>(s)];
 }
 
 }  // namespace tripack

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <initializer_list>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -111,6 +112,9 @@ PointsFile read_text_points(std::istream& in);
 PointsFile read_records_points(std::istream& in);  // text whose 3 columns are "i x y"
 PointsFile read_csv_points(std::istream& in);
 PointsFile read_json_points(std::istream& in);
+
+// One CSV line of fields (csv_field each), commas between them.
+void csv_row(std::ostream& out, std::initializer_list<std::string> fields);
 
 // Writes `bytes` to `path` whole (replacing it); throws std::runtime_error "cannot write PATH:
 // reason" on failure.

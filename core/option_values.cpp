@@ -1,23 +1,34 @@
 #include "core/option_values.hpp"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 namespace tripack {
 
+namespace {
+
+// The whole of `text` read by `read` (std::stoll, std::stold), or nothing.
+template <class T, class Read>
+std::optional<T> whole(const std::string& text, Read read) {
+  std::size_t used = 0;
+  try {
+    const T v = read(text, &used);
+    if (used > 0 && used == text.size()) return v;
+  } catch (...) {
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::pair<long long, long long> parse_range(const std::string& text, const std::string& option) {
   auto number = [&](const std::string& t) {
-    std::size_t used = 0;
-    long long v = 0;
-    try {
-      v = std::stoll(t, &used);
-    } catch (...) {
-      used = 0;
-    }
-    if (used == 0 || used != t.size())
-      throw std::invalid_argument(option + " expects a number or A..B, got '" + text + "'");
-    return v;
+    const auto v = whole<long long>(
+        t, [](const std::string& s, std::size_t* used) { return std::stoll(s, used); });
+    if (!v) throw std::invalid_argument(option + " expects a number or A..B, got '" + text + "'");
+    return *v;
   };
   const auto dots = text.find("..");
   if (dots == std::string::npos) {
@@ -41,16 +52,11 @@ std::vector<long long> parse_range_list(const std::string& text, const std::stri
 }
 
 long double positive_decimal(const std::string& text, const std::string& option) {
-  std::size_t used = 0;
-  long double v = 0;
-  try {
-    v = std::stold(text, &used);
-  } catch (...) {
-    used = 0;
-  }
-  if (used != text.size() || used == 0 || !(v > 0) || !std::isfinite(v))
+  const auto v = whole<long double>(
+      text, [](const std::string& s, std::size_t* used) { return std::stold(s, used); });
+  if (!v || !(*v > 0) || !std::isfinite(*v))
     throw std::invalid_argument(option + " must be a positive decimal number, not '" + text + "'");
-  return v;
+  return *v;
 }
 
 }  // namespace tripack

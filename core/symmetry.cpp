@@ -24,21 +24,9 @@ Vec2L rotate(const Vec2L& p, long double s) {
 }  // namespace
 
 std::string_view symmetry_name(Symmetry g) {
-  switch (g) {
-    case Symmetry::Identity:
-      return "identity";
-    case Symmetry::Rotate120:
-      return "rotate-120";
-    case Symmetry::Rotate240:
-      return "rotate-240";
-    case Symmetry::MirrorVertical:
-      return "mirror-vertical";
-    case Symmetry::MirrorLeft:
-      return "mirror-left";
-    case Symmetry::MirrorRight:
-      return "mirror-right";
-  }
-  return "?";
+  static constexpr std::string_view kNames[] = {"identity",        "rotate-120",  "rotate-240",
+                                                "mirror-vertical", "mirror-left", "mirror-right"};
+  return kNames[static_cast<int>(g)];
 }
 
 Symmetry inverse(Symmetry g) {

@@ -23,15 +23,6 @@ void emit(std::ostream& out, const json& j) {
   out << j.dump(-1, ' ', false, json::error_handler_t::replace) << "\n";
 }
 
-void row(std::ostream& out, std::initializer_list<std::string> fields) {
-  bool first = true;
-  for (const auto& f : fields) {
-    out << (first ? "" : ",") << csv_field(f);
-    first = false;
-  }
-  out << "\n";
-}
-
 template <class Int>
 std::string integer(Int v) {
   return std::to_string(v);
@@ -108,13 +99,13 @@ void best_text(std::ostream& out, const jobs::BestTable& t) {
 }
 
 void best_csv(std::ostream& out, const jobs::BestTable& t) {
-  row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
-            "origin", "source", "graph_hash"});
+  csv_row(out, {"n", "rank", "label", "d", "bonds", "rattlers", "certified", "runs", "first_seed",
+                "origin", "source", "graph_hash"});
   for (const auto& p : t.rows)
-    row(out,
-        {integer(p.n()), integer(p.rank), p.label, p.d.str(kLongDoubleDigits), integer(p.bonds()),
-         integer(p.rattlers()), flag(p.certified), integer(p.runs()),
-         p.has_seed() ? integer(p.first_seed()) : "", origin_of(p), import_name(p), p.graph_hash});
+    csv_row(out, {integer(p.n()), integer(p.rank), p.label, p.d.str(kLongDoubleDigits),
+                  integer(p.bonds()), integer(p.rattlers()), flag(p.certified), integer(p.runs()),
+                  p.has_seed() ? integer(p.first_seed()) : "", origin_of(p), import_name(p),
+                  p.graph_hash});
 }
 
 }  // namespace
@@ -196,11 +187,11 @@ void render_json(std::ostream& out, const jobs::DbCheck& c, const RenderOptions&
 
 void render_csv(std::ostream& out, const jobs::DbCheck& c, const RenderOptions&) {
   const auto& s = c.stats;
-  row(out, {"db", "integrity", "runs", "n_values", "packings", "imported", "duplicates",
-            "duplicate_runs", "duplicate_packings"});
-  row(out, {c.db, s.integrity, integer(s.runs), integer(s.n_values), integer(s.packings),
-            integer(s.imported), integer(c.duplicates()), integer(s.duplicate_runs),
-            integer(s.duplicate_packings)});
+  csv_row(out, {"db", "integrity", "runs", "n_values", "packings", "imported", "duplicates",
+                "duplicate_runs", "duplicate_packings"});
+  csv_row(out, {c.db, s.integrity, integer(s.runs), integer(s.n_values), integer(s.packings),
+                integer(s.imported), integer(c.duplicates()), integer(s.duplicate_runs),
+                integer(s.duplicate_packings)});
 }
 
 // ----- tripack db import ----------------------------------------------------------------------
@@ -243,10 +234,10 @@ void render_json(std::ostream& out, const jobs::ImportResult& r, const RenderOpt
 }
 
 void render_csv(std::ostream& out, const jobs::ImportResult& r, const RenderOptions&) {
-  row(out, {"file", "n", "d", "d_file", "bonds", "rattlers", "stored", "label", "graph_hash"});
+  csv_row(out, {"file", "n", "d", "d_file", "bonds", "rattlers", "stored", "label", "graph_hash"});
   for (const auto& x : r.packings)
-    row(out, {x.file, integer(x.n), x.d, x.d_file, integer(x.bonds), integer(x.rattlers.size()),
-              flag(x.added), x.label, x.graph_hash});
+    csv_row(out, {x.file, integer(x.n), x.d, x.d_file, integer(x.bonds), integer(x.rattlers.size()),
+                  flag(x.added), x.label, x.graph_hash});
 }
 
 // ----- tripack db prune -----------------------------------------------------------------------
@@ -273,10 +264,10 @@ void render_json(std::ostream& out, const jobs::PruneResult& r, const RenderOpti
 }
 
 void render_csv(std::ostream& out, const jobs::PruneResult& r, const RenderOptions&) {
-  row(out, {"db", "keep", "n_values", "kept", "removed", "bytes_before", "bytes_after"});
-  row(out, {r.db, integer(r.keep), integer(r.n_values), integer(r.kept), integer(r.removed),
-            integer(static_cast<long long>(r.bytes_before)),
-            integer(static_cast<long long>(r.bytes_after))});
+  csv_row(out, {"db", "keep", "n_values", "kept", "removed", "bytes_before", "bytes_after"});
+  csv_row(out, {r.db, integer(r.keep), integer(r.n_values), integer(r.kept), integer(r.removed),
+                integer(static_cast<long long>(r.bytes_before)),
+                integer(static_cast<long long>(r.bytes_after))});
 }
 
 }  // namespace tripack::report

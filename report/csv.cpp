@@ -17,15 +17,6 @@ using namespace search;
 
 namespace {
 
-void row(std::ostream& out, std::initializer_list<std::string> fields) {
-  bool first = true;
-  for (const auto& f : fields) {
-    out << (first ? "" : ",") << csv_field(f);
-    first = false;
-  }
-  out << "\n";
-}
-
 std::string num(long double v) {
   return decimal17(v);
 }
@@ -47,34 +38,35 @@ std::string optional_count(const std::optional<long long>& c) {
 }
 
 void packing_header(std::ostream& out) {
-  row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "runs",
-            "first_seed"});
+  csv_row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "runs",
+                "first_seed"});
 }
 
 void packing_rows(std::ostream& out, const BilliardsSearchResult& r) {
   for (std::size_t i = 0; i < r.packings.size(); ++i) {
     const auto& x = r.packings[i];
     const long double d = x.pattern.packing.d;
-    row(out, {integer(r.scene.n), integer(i + 1), x.label, num(d), num(1 / d),
-              num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds()), integer(x.rattlers()),
-              flag(x.certified), integer(x.runs()), integer(x.first_seed())});
+    csv_row(out, {integer(r.scene.n), integer(i + 1), x.label, num(d), num(1 / d),
+                  num(oler_delta(r.scene.n, 1 / d)), integer(x.bonds()), integer(x.rattlers()),
+                  flag(x.certified), integer(x.runs()), integer(x.first_seed())});
   }
 }
 
 }  // namespace
 
 void render_csv(std::ostream& out, const Catalogue& catalogue, const RenderOptions&) {
-  row(out, {"id", "display", "n", "k_min", "k_max", "p_min", "L", "bonds", "rattlers", "claim"});
+  csv_row(out,
+          {"id", "display", "n", "k_min", "k_max", "p_min", "L", "bonds", "rattlers", "claim"});
   for (const auto& c : catalogue.classes())
-    row(out, {c.id, c.display, c.n.text(), integer(c.k_min), c.k_max ? integer(c.k_max) : "",
-              c.has_p ? integer(c.p_min) : "", c.L.text(), c.bonds.text(), c.rattlers.text(),
-              c.claim_status});
+    csv_row(out, {c.id, c.display, c.n.text(), integer(c.k_min), c.k_max ? integer(c.k_max) : "",
+                  c.has_p ? integer(c.p_min) : "", c.L.text(), c.bonds.text(), c.rattlers.text(),
+                  c.claim_status});
 }
 
 void render_csv(std::ostream& out, const Classification& c, const RenderOptions&) {
-  row(out, {"n", "class", "k", "p"});
+  csv_row(out, {"n", "class", "k", "p"});
   for (const auto& m : c.members)
-    row(out, {integer(c.n), m.cls->id, integer(m.k), m.cls->has_p ? integer(m.p) : ""});
+    csv_row(out, {integer(c.n), m.cls->id, integer(m.k), m.cls->has_p ? integer(m.p) : ""});
 }
 
 void render_csv(std::ostream& out, const BestBuild& b, const RenderOptions&) {
@@ -82,45 +74,48 @@ void render_csv(std::ostream& out, const BestBuild& b, const RenderOptions&) {
   const auto& pk = r.pattern.packing;
   const auto& m = r.pattern.provenance;
   const long long n = static_cast<long long>(pk.size());
-  row(out, {"class", "k", "p", "variant", "n", "d", "L", "delta", "bonds", "rattlers", "certified",
-            "exact_check", "seconds"});
-  row(out, {m.class_id, integer(m.k), m.p ? integer(m.p) : "", m.variant, integer(n),
-            r.d_string(std::max(r.digits, 17)), num(1 / pk.d), num(oler_delta(n, 1 / pk.d)),
-            integer(r.pattern.bonds.size()), integer(r.pattern.rattlers.size()),
-            r.analysis ? flag(r.analysis->certified()) : "", r.exact ? flag(r.exact->ok) : "",
-            num(r.seconds())});
+  csv_row(out, {"class", "k", "p", "variant", "n", "d", "L", "delta", "bonds", "rattlers",
+                "certified", "exact_check", "seconds"});
+  csv_row(out, {m.class_id, integer(m.k), m.p ? integer(m.p) : "", m.variant, integer(n),
+                r.d_string(std::max(r.digits, 17)), num(1 / pk.d), num(oler_delta(n, 1 / pk.d)),
+                integer(r.pattern.bonds.size()), integer(r.pattern.rattlers.size()),
+                r.analysis ? flag(r.analysis->certified()) : "", r.exact ? flag(r.exact->ok) : "",
+                num(r.seconds())});
 }
 
 void render_csv(std::ostream& out, const FormulaCheck& c, const RenderOptions&) {
-  row(out, {"class", "k", "p", "variant", "n", "d_built", "d_formula", "relative_difference",
-            "bonds", "bonds_expected", "exact_check", "ok"});
+  csv_row(out, {"class", "k", "p", "variant", "n", "d_built", "d_formula", "relative_difference",
+                "bonds", "bonds_expected", "exact_check", "ok"});
   for (const auto& r : c.rows)
-    row(out, {r.class_id, integer(r.k), r.p ? integer(r.p) : "", r.variant, integer(r.n),
-              num(r.d_built), r.d_formula ? num(*r.d_formula) : "",
-              r.d_formula ? num(static_cast<double>(r.relative_difference)) : "", integer(r.bonds),
-              optional_count(r.bonds_expected), optional_flag(r.exact_ok), flag(r.ok)});
+    csv_row(out,
+            {r.class_id, integer(r.k), r.p ? integer(r.p) : "", r.variant, integer(r.n),
+             num(r.d_built), r.d_formula ? num(*r.d_formula) : "",
+             r.d_formula ? num(static_cast<double>(r.relative_difference)) : "", integer(r.bonds),
+             optional_count(r.bonds_expected), optional_flag(r.exact_ok), flag(r.ok)});
 }
 
 void render_csv(std::ostream& out, const CatalogueTable& t, const RenderOptions&) {
-  row(out, {"class", "k", "p", "variant", "n", "d", "L", "delta", "bonds", "rattlers",
-            "geometry_matches_builder", "certified", "exact_check", "ok", "seconds"});
+  csv_row(out, {"class", "k", "p", "variant", "n", "d", "L", "delta", "bonds", "rattlers",
+                "geometry_matches_builder", "certified", "exact_check", "ok", "seconds"});
   for (const auto& r : t.rows)
-    row(out, {r.member.class_id, integer(r.member.k), r.member.p ? integer(r.member.p) : "",
-              r.member.variant, integer(r.n), num(r.d), num(1 / r.d), num(oler_delta(r.n, 1 / r.d)),
-              integer(r.bonds), integer(r.rattlers), flag(r.geometry_match), flag(r.certified),
-              optional_flag(r.exact_ok), flag(r.ok), num(r.seconds)});
+    csv_row(out,
+            {r.member.class_id, integer(r.member.k), r.member.p ? integer(r.member.p) : "",
+             r.member.variant, integer(r.n), num(r.d), num(1 / r.d), num(oler_delta(r.n, 1 / r.d)),
+             integer(r.bonds), integer(r.rattlers), flag(r.geometry_match), flag(r.certified),
+             optional_flag(r.exact_ok), flag(r.ok), num(r.seconds)});
 }
 
 void render_csv(std::ostream& out, const FileAnalysis& f, const RenderOptions&) {
   const Analysis& a = f.analysis;
   const long long n = static_cast<long long>(a.pattern.packing.size());
-  row(out, {"file", "n", "d", "L", "delta", "convention", "value_in_convention", "bonds",
-            "rattlers", "certified", "seconds"});
+  csv_row(out, {"file", "n", "d", "L", "delta", "convention", "value_in_convention", "bonds",
+                "rattlers", "certified", "seconds"});
   const int digits = std::max(f.digits, 17);
-  row(out, {f.file, integer(n), f.d_string(digits), f.L_string(digits),
-            num(oler_delta(n, 1 / a.pattern.packing.d)), std::string(convention_name(f.convention)),
-            f.value_string(digits), integer(a.pattern.bonds.size()),
-            integer(a.pattern.rattlers.size()), flag(a.certified()), num(f.seconds())});
+  csv_row(out,
+          {f.file, integer(n), f.d_string(digits), f.L_string(digits),
+           num(oler_delta(n, 1 / a.pattern.packing.d)), std::string(convention_name(f.convention)),
+           f.value_string(digits), integer(a.pattern.bonds.size()),
+           integer(a.pattern.rattlers.size()), flag(a.certified()), num(f.seconds())});
 }
 
 void render_csv(std::ostream& out, const BilliardsSearchResult& r, const RenderOptions&) {
@@ -129,32 +124,32 @@ void render_csv(std::ostream& out, const BilliardsSearchResult& r, const RenderO
 }
 
 void render_csv(std::ostream& out, const SearchResult& r, const RenderOptions&) {
-  row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "chains",
-            "first_seed"});
+  csv_row(out, {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers", "certified", "chains",
+                "first_seed"});
   for (const auto& x : r.packings)
-    row(out,
-        {integer(r.request.n), integer(x.rank), x.label, x.d.str(kLongDoubleDigits),
-         x.L.str(kLongDoubleDigits), num(oler_delta(r.request.n, x.L.value())), integer(x.bonds()),
-         integer(x.rattlers()), flag(x.certified), integer(x.runs()), integer(x.first_seed())});
+    csv_row(out, {integer(r.request.n), integer(x.rank), x.label, x.d.str(kLongDoubleDigits),
+                  x.L.str(kLongDoubleDigits), num(oler_delta(r.request.n, x.L.value())),
+                  integer(x.bonds()), integer(x.rattlers()), flag(x.certified), integer(x.runs()),
+                  integer(x.first_seed())});
 }
 
 void render_csv(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions&) {
-  row(out, {"n", "constructed", "d_constructed", "bonds_constructed", "rattlers_constructed",
-            "billiards_label", "d_billiards", "bonds_billiards", "rattlers_billiards",
-            "d_relative_difference", "same_contact_graph", "same_packing", "symmetry"});
+  csv_row(out, {"n", "constructed", "d_constructed", "bonds_constructed", "rattlers_constructed",
+                "billiards_label", "d_billiards", "bonds_billiards", "rattlers_billiards",
+                "d_relative_difference", "same_contact_graph", "same_packing", "symmetry"});
   const BuildResult* b = c.constructed ? &c.constructed->best : nullptr;
   const PackingRecord* x = c.billiards.packings.empty() ? nullptr : &c.billiards.packings.front();
-  row(out,
-      {integer(c.n), b ? member_name(b->pattern.provenance) : "",
-       b ? num(b->pattern.packing.d) : "", b ? integer(b->pattern.bonds.size()) : "",
-       b ? integer(b->pattern.rattlers.size()) : "", x ? x->label : "",
-       x ? num(x->pattern.packing.d) : "", x ? integer(x->bonds()) : "",
-       x ? integer(x->rattlers()) : "",
-       c.comparison ? num(static_cast<double>(c.d_relative_difference)) : "",
-       c.comparison ? flag(c.comparison->isomorphic) : "",
-       c.comparison ? flag(c.comparison->same) : "",
-       c.comparison && c.comparison->symmetry ? std::string(symmetry_name(*c.comparison->symmetry))
-                                              : ""});
+  csv_row(out, {integer(c.n), b ? member_name(b->pattern.provenance) : "",
+                b ? num(b->pattern.packing.d) : "", b ? integer(b->pattern.bonds.size()) : "",
+                b ? integer(b->pattern.rattlers.size()) : "", x ? x->label : "",
+                x ? num(x->pattern.packing.d) : "", x ? integer(x->bonds()) : "",
+                x ? integer(x->rattlers()) : "",
+                c.comparison ? num(static_cast<double>(c.d_relative_difference)) : "",
+                c.comparison ? flag(c.comparison->isomorphic) : "",
+                c.comparison ? flag(c.comparison->same) : "",
+                c.comparison && c.comparison->symmetry
+                    ? std::string(symmetry_name(*c.comparison->symmetry))
+                    : ""});
 }
 
 }  // namespace tripack::report

@@ -4,13 +4,7 @@
 # Usage: explore_test.sh path/to/tripack
 set -u
 TRIPACK=$1
-pass=0
-fail=0
-check() {  # check "description" command...
-  local what=$1
-  shift
-  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $what"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/check.sh"
 CHROMIUM=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$CHROMIUM" ]; then
   echo "explore_test: chromium not found: install the Debian package chromium (scripts/install-deps.sh does)"

@@ -9,13 +9,7 @@ command -v sqlite3 >/dev/null || { echo "needs the sqlite3 command (scripts/inst
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-pass=0
-fail=0
-check() {  # check "description" command...
-  local what=$1
-  shift
-  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: $what"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/check.sh"
 # Every distinct packing with its d, contact-graph hash and number of runs: the database's content
 # that does not depend on the order in which units finished.
 packings() { sqlite3 -batch "$1" "SELECT n, d, graph_hash, runs FROM packings ORDER BY n, d, graph_hash"; }

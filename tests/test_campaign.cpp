@@ -11,26 +11,28 @@
 #include "jobs/campaign.hpp"
 #include "jobs/stored.hpp"
 #include "jobs/work_unit.hpp"
+#include "scratch.hpp"
 
 namespace tripack::jobs {
 namespace {
 
 std::string fresh_db(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("tripack_campaign_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / name).string();
-  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path + suffix);
-  return path;
+  return testing_scratch::fresh_db("campaign", name);
+}
+
+// Billiards units over n = first..last, `runs` seeds each, on 2 threads, into a fresh database.
+CampaignRequest small_campaign(long long first, long long last, int runs, const std::string& db) {
+  CampaignRequest request;
+  request.n_first = first;
+  request.n_last = last;
+  request.runs = runs;
+  request.threads = 2;
+  request.db = fresh_db(db);
+  return request;
 }
 
 TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
-  CampaignRequest request;
-  request.n_first = 10;
-  request.n_last = 13;
-  request.runs = 4;
-  request.threads = 2;
-  request.db = fresh_db("agree.db");
+  CampaignRequest request = small_campaign(10, 13, 4, "agree.db");
   const CampaignResult first = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   EXPECT_EQ(first.units, 16);
   EXPECT_EQ(first.skipped, 0);
@@ -135,12 +137,7 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
 // db prune keeps exactly the best K of each n in its range, in ranked_packings' order, leaves
 // every run and the other n alone, and a rerun of the campaign still skips every unit.
 TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
-  CampaignRequest request;
-  request.n_first = 14;
-  request.n_last = 17;
-  request.runs = 12;
-  request.threads = 2;
-  request.db = fresh_db("prune.db");
+  CampaignRequest request = small_campaign(14, 17, 12, "prune.db");
   run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
   std::map<long long, std::vector<PackingRecord>> before;
   std::map<long long, std::vector<long long>> before_ids;

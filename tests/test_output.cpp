@@ -13,15 +13,11 @@
 namespace tripack {
 namespace {
 
-const Catalogue& catalogue() {
-  static const Catalogue c = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
-  return c;
-}
-
 TEST(Output, EveryWriterRendersAResultFromItsJsonFields) {
   // classify 22: three members (matrix p=3 k=1, even-ripple k=3, vacancy-segment p=6 k=1).
   std::ostringstream json;
-  report::render(json, pipeline::classify(catalogue(), 22), report::OutputFormat::Json);
+  report::render(json, pipeline::classify(Catalogue::load(TRIPACK_DEFAULT_CATALOGUE), 22),
+                 report::OutputFormat::Json);
   for (const auto& writer : report::output_writers()) {
     std::ostringstream out;
     report::write_json_description(out, json.str(), writer.format);

@@ -13,6 +13,7 @@
 #include <string>
 #include <thread>
 
+#include "scratch.hpp"
 #include "store/results_db.hpp"
 
 namespace tripack::store {
@@ -20,12 +21,7 @@ namespace {
 
 // A fresh database path in the test's temporary directory.
 std::string fresh_path(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("tripack_store_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
-  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
-  return path.string();
+  return testing_scratch::fresh_db("store", name);
 }
 
 StoredPacking packing(long long n, const std::string& d, const std::string& hash) {
