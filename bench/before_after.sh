@@ -2,8 +2,10 @@
 # Before/after on one machine in one run, interleaved (before, after, before, after, ...) so a
 # noisy neighbour hits both alike: billiards events/s (bench_billiards, jamming at n = 100, 1000,
 # 10000), certify at n = 10^4 (bench_analysis BM_CertifyBuilt/71: built Delta(142)+1, n = 10,154)
-# and campaign runs/s (`tripack campaign --threads 2` at n = 22 x 300 runs and n = 100 x 24 runs,
-# a fresh database each time, wall time of the command). Prints medians and after/before ratios.
+# campaign runs/s (`tripack campaign --threads 2` at n = 22 x 300 runs and n = 100 x 24 runs,
+# a fresh database each time, wall time of the command) and search steps/s (`tripack search 60
+# --steps 100 --threads 1 --seed 1`: the same steps every time; steps over the search's own wall
+# time from its JSON). Prints medians and after/before ratios.
 # Usage: bench/before_after.sh BEFORE_DIR AFTER_DIR   (each holding tripack, bench_billiards,
 # bench_analysis). Env: REPS (5).
 set -euo pipefail
@@ -36,6 +38,9 @@ for ((rep = 0; rep < REPS; rep++)); do
       end=$(date +%s.%N)
       awk -v r="$runs" -v s="$start" -v e="$end" 'BEGIN { print r / (e - s) }' >>"$work/campaign.$side.$n"
     done
+    "$dir/tripack" search 60 --steps 100 --threads 1 --seed 1 --json 2>/dev/null |
+      python3 -c 'import json, sys; j = json.load(sys.stdin); print(j["steps"] / j["seconds"])' \
+        >>"$work/search.$side"
   done
   echo "round $((rep + 1)) of $REPS done" >&2
 done
@@ -63,3 +68,4 @@ for case in "${campaign_cases[@]}"; do
   n=${case%%:*}
   row "campaign runs/s, n = $n, 2 threads" "$work/campaign.before.$n" "$work/campaign.after.$n"
 done
+row "search steps/s, n = 60, 1 thread, 100 steps" "$work/search.before" "$work/search.after"

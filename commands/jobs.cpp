@@ -76,7 +76,7 @@ class Explore : public Command {
                                jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
     }
     const CancelToken never;
-    report::ProgressLine progress(std::cerr, job_line("explore", 0));
+    report::ProgressLine progress(std::cerr, job_line(kInfo.name, 0));
     const auto result =
         jobs::explore(catalogue, settings, c.cancel ? *c.cancel : never, progress.callback());
     progress.finish();
@@ -111,7 +111,7 @@ class Campaign : public RequestCommand<jobs::CampaignRequest, true> {
     // kill).
     const std::unique_ptr<Executor> executor = executor_for_launch(request.threads);
     std::optional<report::ProgressLine> progress;
-    if (executor->rank() == 0) progress.emplace(std::cerr, job_line("campaign", 1));
+    if (executor->rank() == 0) progress.emplace(std::cerr, job_line(kInfo.name, 1));
     const auto result = jobs::run_campaign(request, *executor, c.cancel,
                                            progress ? progress->callback() : ProgressFn{});
     if (progress) progress->finish();
@@ -151,7 +151,7 @@ class Atlas : public Command {
   int run(const Context& c) override {
     const Catalogue catalogue = load_catalogue(c);
     const std::filesystem::path dir = writable_directory(out_dir);
-    report::ProgressLine progress(std::cerr, job_line("atlas", 20));
+    report::ProgressLine progress(std::cerr, job_line(kInfo.name, 20));
     const auto atlas = jobs::build_atlas(catalogue, db, settings, c.cancel, progress.callback());
     progress.finish();
     if (atlas.interrupted) return cancelled("nothing written");
@@ -194,7 +194,7 @@ class ExactAtlas : public RequestCommand<jobs::ExactAtlasSettings> {
     if (request.atlas.empty()) request.atlas = data_directory() / "atlas.csv";
     if (request.out.empty()) request.out = request.atlas.parent_path();
     writable_directory(request.out.string());
-    report::ProgressLine progress(std::cerr, job_line("exact-atlas", 1));
+    report::ProgressLine progress(std::cerr, job_line(kInfo.name, 1));
     const auto result = jobs::build_exact_atlas(request, c.cancel, progress.callback());
     progress.finish();
     std::map<std::string, int> proofs;

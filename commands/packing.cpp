@@ -56,7 +56,7 @@ class Build : public Command {
   int run(const Context& c) override {
     const Catalogue catalogue = load_catalogue(c);
     // Builds over 2 s show their stage (the LP-free certificate of 4Delta(224) takes 14 s).
-    report::ProgressLine progress(std::cerr, terminal_line("build", out, 2));
+    report::ProgressLine progress(std::cerr, terminal_line(kInfo.name, out, 2));
     settings.progress = progress.callback();
     pipeline::BestBuild result;
     if (n) {
@@ -106,7 +106,7 @@ class Analyze : public Command {
     diagrams.declare(o);
   }
   int run(const Context&) override {
-    report::ProgressLine progress(std::cerr, terminal_line("analyze", out, 2));
+    report::ProgressLine progress(std::cerr, terminal_line(kInfo.name, out, 2));
     request.progress = progress.callback();
     const auto result = pipeline::analyze_file(request);
     progress.finish();
