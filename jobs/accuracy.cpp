@@ -43,10 +43,12 @@ constexpr std::array<GapTarget, 4> kGapTargets{
     {{1e-3, "gap 1e-3"}, {1e-6, "gap 1e-6"}, {1e-9, "gap 1e-9"}, {1e-12, "gap 1e-12"}}};
 constexpr std::array<int, 3> kMultiprecisionDigits{30, 50, 100};
 
-// Digits a format can hold at most: the engine's d comes from a double diameter; the polisher's
-// from long double (64-bit mantissa, 19.3 digits).
-constexpr double kDoubleDigits = 17;
-constexpr double kLongDoubleDigits = 19;
+// Digits a format can hold at most, the ceiling of the study's digit counts: the engine's d comes
+// from a double diameter (17 digits round-trip it), the polisher's from long double (a 64-bit
+// mantissa: 19.3 digits). Not core/precision.hpp's kLongDoubleDigits (18), which is how many
+// digits tripack claims of a long double value.
+constexpr double kDoubleMantissaDigits = 17;
+constexpr double kLongDoubleMantissaDigits = 19;
 
 const double kNoDigits = std::numeric_limits<double>::quiet_NaN();
 
@@ -184,7 +186,7 @@ void measure_n(long long n, const Catalogue& catalogue, const AccuracySettings& 
       last = bond_system_of(sim.packing);
       last_reference = reference_d(last);
       row.label = label_of(last, n, best);
-      row.digits = digits_against(fixed(sim.packing.d), last_reference, kDoubleDigits);
+      row.digits = digits_against(fixed(sim.packing.d), last_reference, kDoubleMantissaDigits);
       row.reference = last_reference.substr(0, 22);
     } catch (const std::exception& e) {  // one failed run leaves the others' rows
       last = {};
@@ -196,9 +198,10 @@ void measure_n(long long n, const Catalogue& catalogue, const AccuracySettings& 
   if (last.pattern.packing.size() == 0) return;  // the last run failed: nothing to polish
   const std::string label = rows.back().label;
   const std::string shown = last_reference.substr(0, 22);
-  rows.push_back({n, label, "polish (long double)", "double", last.seconds,
-                  digits_against(fixed(last.pattern.packing.d), last_reference, kLongDoubleDigits),
-                  shown});
+  rows.push_back(
+      {n, label, "polish (long double)", "double", last.seconds,
+       digits_against(fixed(last.pattern.packing.d), last_reference, kLongDoubleMantissaDigits),
+       shown});
   for (int digits : kMultiprecisionDigits) {
     if (progress) progress(fmt::format("n = {}: MPFR to {} digits", n, digits));
     double seconds = 0;
