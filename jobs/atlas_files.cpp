@@ -9,36 +9,12 @@
 
 #include "core/io.hpp"
 #include "formats/formats.hpp"
+#include "formats/tables.hpp"
 #include "pipeline/analyze.hpp"
 
 namespace tripack::jobs {
 
 namespace {
-
-const std::vector<std::string> kColumns{"n",         "rank",          "label",  "d",
-                                        "L",         "delta",         "bonds",  "rattlers",
-                                        "certified", "confirmations", "source", "file"};
-
-const std::vector<std::string> kGapColumns{"class",
-                                           "p",
-                                           "k",
-                                           "n",
-                                           "n_label",
-                                           "next_label",
-                                           "L_n",
-                                           "L_next",
-                                           "L_difference",
-                                           "delta_difference",
-                                           "paper_tight"};
-
-std::string csv_line(const std::vector<std::string>& fields) {
-  std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i) line += ',';
-    line += csv_field(fields[i]);
-  }
-  return line + "\n";
-}
 
 std::vector<std::string> fields_of(const PackingRecord& r) {
   return {std::to_string(r.n()),
@@ -55,40 +31,7 @@ std::vector<std::string> fields_of(const PackingRecord& r) {
           r.file};
 }
 
-// Writes `bytes` to `path` whole; throws a one-line error naming it.
-void write_whole(const std::filesystem::path& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << bytes;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 }  // namespace
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        fields.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        fields.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.emplace_back();
-    } else if (c != '\r') {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
 
 void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   const auto files = dir / "atlas";
@@ -111,69 +54,34 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
           "the rattlers' places (free in their cages) are the analysis' long double ones");
     std::ostringstream text;
     write_text(text, row.pattern, options);
-    write_whole(dir / row.file, text.str());
+    write_whole_file(dir / row.file, text.str());
     written.insert((dir / row.file).filename().string());
   }
   // A rerun over the same range replaces the table: files of rows that left it go too.
   for (const auto& entry : std::filesystem::directory_iterator(files))
     if (entry.path().extension() == ".txt" && !written.count(entry.path().filename().string()))
       std::filesystem::remove(entry.path());
-  std::string gaps = csv_line(kGapColumns);
+  std::string gaps = table_header(atlas_gaps_table_format());
   for (const auto& g : atlas.gaps)
-    gaps += csv_line(
+    gaps += table_line(
         {g.class_id, g.p ? std::to_string(g.p) : "", std::to_string(g.k), std::to_string(g.n),
          g.label_n, g.label_next, format_significant(g.L_n, kLongDoubleDigits),
          format_significant(g.L_next, kLongDoubleDigits), format_significant(g.L_next - g.L_n, 15),
          format_significant(g.delta_difference, 15), g.claim_tight});
-  write_whole(dir / "atlas-gaps.csv", gaps);
-  write_whole(dir / "atlas.csv", atlas_table(atlas));
+  write_whole_file(dir / atlas_gaps_table_format().file, gaps);
+  write_whole_file(dir / atlas_table_format().file, atlas_table(atlas));
 }
 
 std::string atlas_table(const AtlasResult& atlas) {
-  std::string table = csv_line(kColumns);
-  for (const auto& row : atlas.rows) table += csv_line(fields_of(row));
+  std::string table = table_header(atlas_table_format());
+  for (const auto& row : atlas.rows) table += table_line(fields_of(row));
   return table;
 }
-
-namespace {
-
-// The rows of a CSV table with this exact header, each with as many fields; one-line errors
-// naming the file and line.
-std::vector<std::vector<std::string>> read_table(const std::filesystem::path& csv,
-                                                 const std::vector<std::string>& columns,
-                                                 const std::string& what) {
-  std::ifstream in(csv);
-  if (!in) throw std::runtime_error("cannot read the " + what + " " + csv.string());
-  std::string line;
-  std::vector<std::vector<std::string>> rows;
-  long long number = 0;
-  auto fail = [&](const std::string& why) {
-    throw std::runtime_error(fmt::format("{}:{}: {}", csv.string(), number, why));
-  };
-  while (std::getline(in, line)) {
-    ++number;
-    auto f = split_csv(line);
-    if (number == 1) {
-      if (f != columns)
-        fail("not a tripack " + what + " (its header is not " + csv_line(columns).substr(0, 200) +
-             ")");
-      continue;
-    }
-    if (line.empty()) continue;
-    if (f.size() != columns.size())
-      fail(fmt::format("{} fields, expected {}", f.size(), columns.size()));
-    rows.push_back(std::move(f));
-  }
-  if (number == 0) fail("empty file");
-  return rows;
-}
-
-}  // namespace
 
 std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
   std::vector<PackingRecord> rows;
   long long number = 1;
-  for (const auto& f : read_table(csv, kColumns, "atlas table")) {
+  for (const auto& f : read_table(csv, atlas_table_format())) {
     ++number;
     long long n = 0, confirmations = 0;
     PackingRecord row;
@@ -211,7 +119,7 @@ std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
 std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
   std::vector<AtlasGap> gaps;
   long long number = 1;
-  for (const auto& f : read_table(csv, kGapColumns, "atlas gaps table")) {
+  for (const auto& f : read_table(csv, atlas_gaps_table_format())) {
     ++number;
     AtlasGap g;
     try {

@@ -1,6 +1,7 @@
 // The atlas on disk: DIR/atlas.csv with the columns
 //   n, rank, label, d, L, delta, bonds, rattlers, certified, confirmations, source, file
-// (d and L as strings with the polish's significant digits, delta with L's decimals) and one
+// (formats/tables.hpp; d and L as strings with the polish's significant digits, delta with L's
+// decimals) and one
 // coordinates file per row, DIR/atlas/<label>.txt: `x y` lines in the unit triangle with the
 // polish's digits under the `# d:` header that `-o` writes. The format's one place: the writer
 // (`tripack atlas`), the reader, and the loader the explorer draws the atlas from.
@@ -35,8 +36,5 @@ std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv);
 // The rows with rank <= max_rank, each file analysed again (bonds, rattlers, forces, the
 // certificate from the file alone), with the table's label, rank, d and L. Same errors.
 std::vector<PackingRecord> load_atlas(const std::filesystem::path& csv, long long max_rank);
-
-// RFC 4180 fields of one CSV line (no line breaks inside fields: the tables here write none).
-std::vector<std::string> split_csv(const std::string& line);
 
 }  // namespace tripack::jobs

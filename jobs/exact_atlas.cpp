@@ -12,6 +12,7 @@
 #include "core/io.hpp"
 #include "core/timing.hpp"
 #include "exact/certificate.hpp"
+#include "formats/tables.hpp"
 #include "jobs/atlas_files.hpp"
 #include "pipeline/build.hpp"
 #include "runner/runner.hpp"
@@ -74,29 +75,25 @@ void sort_table(const fs::path& csv, const std::vector<std::string>& order,
 }  // namespace
 
 std::string exact_csv_header() {
-  return "n,label,degree,polynomial,root_low,root_high,proof,reason,seconds";
+  const std::string line = table_header(exact_atlas_table_format());
+  return line.substr(0, line.size() - 1);
 }
 
 std::string exact_csv_row(const pipeline::ExactResult& r) {
   const auto& p = r.polynomial;
-  return fmt::format("{},{},{},{},{},{},{},{},{:.2f}", r.n, csv_field(r.label),
-                     p.found ? std::to_string(p.polynomial.degree()) : "",
-                     p.found ? csv_field(p.polynomial.pari("x")) : "", p.found ? p.root.low : "",
-                     p.found ? p.root.high : "", r.proof, csv_field(r.reason),
-                     r.seconds_polish + r.seconds_polynomial + r.seconds_existence);
+  const std::string line = table_line(
+      {std::to_string(r.n), r.label, p.found ? std::to_string(p.polynomial.degree()) : "",
+       p.found ? p.polynomial.pari("x") : "", p.found ? p.root.low : "", p.found ? p.root.high : "",
+       r.proof, r.reason,
+       fmt::format("{:.2f}", r.seconds_polish + r.seconds_polynomial + r.seconds_existence)});
+  return line.substr(0, line.size() - 1);
 }
 
 std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
   std::map<std::string, ExactAtlasRow> rows;
-  std::ifstream in(csv);
-  if (!in) return rows;
-  std::string line;
-  std::getline(in, line);
-  for (int number = 2; std::getline(in, line); ++number) {
-    const auto f = split_csv(line);
-    if (f.size() != 9)
-      throw std::runtime_error(
-          fmt::format("{}:{}: {} columns, 9 expected", csv.string(), number, f.size()));
+  int number = 1;
+  for (const auto& f : read_table(csv, exact_atlas_table_format(), true)) {
+    ++number;
     ExactAtlasRow r;
     try {
       r.n = std::stoll(f[0]);
