@@ -77,15 +77,15 @@ std::vector<std::string> split_csv(const std::string& line) {
   return fields;
 }
 
-std::vector<std::vector<std::string>> read_table(const std::filesystem::path& csv,
-                                                 const TableFormat& format, bool missing_is_empty) {
+std::vector<TableRow> read_table(const std::filesystem::path& csv, const TableFormat& format,
+                                 bool missing_is_empty) {
   std::ifstream in(csv);
   if (!in) {
     if (missing_is_empty) return {};
     throw std::runtime_error("cannot read the " + format.what + " " + csv.string());
   }
   std::string line;
-  std::vector<std::vector<std::string>> rows;
+  std::vector<TableRow> rows;
   long long number = 0;
   auto fail = [&](const std::string& why) {
     throw std::runtime_error(fmt::format("{}:{}: {}", csv.string(), number, why));
@@ -102,7 +102,7 @@ std::vector<std::vector<std::string>> read_table(const std::filesystem::path& cs
     if (line.empty()) continue;
     if (f.size() != format.columns.size())
       fail(fmt::format("{} fields, expected {}", f.size(), format.columns.size()));
-    rows.push_back(std::move(f));
+    rows.push_back({number, std::move(f)});
   }
   if (number == 0) fail("empty file");
   return rows;

@@ -28,11 +28,14 @@ std::string table_header(const TableFormat& format);  // table_line of the colum
 // RFC 4180 fields of one CSV line (no line breaks inside fields: these tables write none).
 std::vector<std::string> split_csv(const std::string& line);
 
+struct TableRow {
+  long long line = 0;  // in the file, for errors
+  std::vector<std::string> fields;
+};
 // The rows of `csv`, whose header must be the format's, each with as many fields as columns;
 // blank lines are skipped. Throws a one-line std::runtime_error naming the file and line (or
 // "cannot read the WHAT FILE"); a missing file gives no rows when `missing_is_empty`.
-std::vector<std::vector<std::string>> read_table(const std::filesystem::path& csv,
-                                                 const TableFormat& format,
-                                                 bool missing_is_empty = false);
+std::vector<TableRow> read_table(const std::filesystem::path& csv, const TableFormat& format,
+                                 bool missing_is_empty = false);
 
 }  // namespace tripack

@@ -80,9 +80,7 @@ std::string atlas_table(const AtlasResult& atlas) {
 
 std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
   std::vector<PackingRecord> rows;
-  long long number = 1;
-  for (const auto& f : read_table(csv, atlas_table_format())) {
-    ++number;
+  for (const auto& [number, f] : read_table(csv, atlas_table_format())) {
     long long n = 0, confirmations = 0;
     PackingRecord row;
     try {
@@ -118,9 +116,7 @@ std::vector<PackingRecord> read_atlas(const std::filesystem::path& csv) {
 
 std::vector<AtlasGap> read_atlas_gaps(const std::filesystem::path& csv) {
   std::vector<AtlasGap> gaps;
-  long long number = 1;
-  for (const auto& f : read_table(csv, atlas_gaps_table_format())) {
-    ++number;
+  for (const auto& [number, f] : read_table(csv, atlas_gaps_table_format())) {
     AtlasGap g;
     try {
       g.class_id = f[0];

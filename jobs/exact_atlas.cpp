@@ -91,9 +91,7 @@ std::string exact_csv_row(const pipeline::ExactResult& r) {
 
 std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
   std::map<std::string, ExactAtlasRow> rows;
-  int number = 1;
-  for (const auto& f : read_table(csv, exact_atlas_table_format(), true)) {
-    ++number;
+  for (const auto& [number, f] : read_table(csv, exact_atlas_table_format(), true)) {
     ExactAtlasRow r;
     try {
       r.n = std::stoll(f[0]);
