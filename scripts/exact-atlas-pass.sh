@@ -3,7 +3,9 @@
 # time so that a row that runs too long is stopped (`timeout`) without losing the others: each
 # finished row is appended to data/atlas-exact.csv at once (certificate in data/exact/), so the pass
 # is resumable: rerun it and the rows already proven are skipped. Every row's wall time and exit
-# status go to data/exact-atlas-runs.log (status 124: stopped at the time limit).
+# status go to data/exact-atlas-runs.log (status 124 or 137: stopped at the time limit). Run it
+# with TRIPACK= a copy of the binary: a rebuild under a running pass makes the later rows fail to
+# start (exit 126).
 # Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
 #   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
 # ATLAS.csv = rank1: only the best packing of each n (data/atlas.csv's rank-1 rows, written to
@@ -21,7 +23,9 @@ log=$root/data/exact-atlas-runs.log
 [ -f "$log" ] || echo "# n first_digits digits max_degree time_limit_s wall_s exit_status" >"$log"
 for n in "$@"; do
   start=$(date +%s.%N)
-  timeout "$seconds" "$TRIPACK" exact-atlas --atlas "$atlas" --out "$root/data" --n "$n" --retry-none \
+  # exact-atlas is a long job: a SIGTERM lets the row under way finish, so the time limit ends
+  # in a SIGKILL a minute later (the row is then not in the table; a later pass runs it again).
+  timeout --kill-after=60 "$seconds" "$TRIPACK" exact-atlas --atlas "$atlas" --out "$root/data" --n "$n" --retry-none \
     --first-digits "$first" --digits "$digits" --max-degree "$degree" --threads 1 >/dev/null 2>&1
   status=$?
   wall=$(echo "$(date +%s.%N) - $start" | bc)
