@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -38,10 +39,12 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
   std::filesystem::create_directories(files);
   std::set<std::string> written;
   for (const auto& row : atlas.rows) {
+    // Through the format table (the text format, by the file's extension), with every digit the
+    // polish gave d and the coordinates (more digits asked than known: the known ones, as they
+    // are).
     WriteOptions options;
     options.label = row.label;
-    options.exact_d = row.d.str();
-    options.exact_points = &row.precise_points;
+    options.digits = options.d_digits = std::numeric_limits<int>::max();
     options.comments = {
         "rank: " + std::to_string(row.rank),
         "L: " + row.L.str(),
@@ -52,9 +55,7 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
     if (!row.pattern.rattlers.empty())
       options.comments.push_back(
           "the rattlers' places (free in their cages) are the analysis' long double ones");
-    std::ostringstream text;
-    write_text(text, row.pattern, options);
-    write_whole_file(dir / row.file, text.str());
+    write_packing_file((dir / row.file).string(), row, options);
     written.insert((dir / row.file).filename().string());
   }
   // A rerun over the same range replaces the table: files of rows that left it go too.
