@@ -51,7 +51,7 @@ report::ProgressLineOptions terminal_line(std::string job, const Output& out,
                                           double quiet_seconds) {
   report::ProgressLineOptions options;
   options.job = std::move(job);
-  options.terminal = !out.json && !out.csv && isatty(fileno(stderr));
+  options.terminal = out.format_name() == "text" && isatty(fileno(stderr));
   options.quiet_seconds = quiet_seconds;
   return options;
 }
@@ -62,15 +62,6 @@ report::ProgressLineOptions job_line(std::string job, long long log_every) {
   options.terminal = isatty(fileno(stderr));
   options.log_every = log_every;
   return options;
-}
-
-std::filesystem::path writable_directory(const std::string& name) {
-  const std::filesystem::path dir(name);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir) || access(dir.c_str(), W_OK) != 0)
-    throw std::runtime_error("cannot write to directory '" + name + "'");
-  return dir;
 }
 
 int cancelled(const std::string& what) {

@@ -95,10 +95,6 @@ report::ProgressLineOptions terminal_line(std::string job, const Output& out,
 // A long job's progress: redrawn on a terminal; in a log, every `log_every`-th item.
 report::ProgressLineOptions job_line(std::string job, long long log_every);
 
-// The directory, created if needed; checked before any work so a long run cannot end in an
-// unwritable place.
-std::filesystem::path writable_directory(const std::string& name);
-
 // How every cancelled long job ends: one line "tripack: cancelled: interrupted; WHAT" on stderr
 // and exit kCancelledExit.
 int cancelled(const std::string& what);

@@ -1,6 +1,7 @@
 #include "core/io.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -637,6 +638,15 @@ void csv_row(std::ostream& out, std::initializer_list<std::string> fields) {
     first = false;
   }
   out << "\n";
+}
+
+std::filesystem::path writable_directory(const std::string& name) {
+  const std::filesystem::path dir(name);
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir) || access(dir.c_str(), W_OK) != 0)
+    throw std::runtime_error("cannot write to directory '" + name + "'");
+  return dir;
 }
 
 }  // namespace tripack

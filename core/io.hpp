@@ -116,6 +116,10 @@ PointsFile read_json_points(std::istream& in);
 // One CSV line of fields (csv_field each), commas between them.
 void csv_row(std::ostream& out, std::initializer_list<std::string> fields);
 
+// The directory, created if needed, checked writable; throws "cannot write to directory 'NAME'".
+// Called before any work, so a long run cannot end in an unwritable place.
+std::filesystem::path writable_directory(const std::string& name);
+
 // Writes `bytes` to `path` whole (replacing it); throws std::runtime_error "cannot write PATH:
 // reason" on failure.
 void write_whole_file(const std::filesystem::path& path, const std::string& bytes);

@@ -190,14 +190,8 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
 pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& request) {
   if (request.files.empty() == request.class_id.empty())
     throw std::invalid_argument("exact needs packing files or --class C --k A..B, not both");
-  fs::path dir;
-  if (!request.certificates.empty()) {
-    dir = request.certificates;
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir))
-      throw std::runtime_error("cannot write to directory '" + request.certificates + "'");
-  }
+  const fs::path dir =
+      request.certificates.empty() ? fs::path() : writable_directory(request.certificates);
   // Class members as built (polished, not certified: exact_of_packing analyses them itself).
   std::vector<std::pair<std::string, Packing>> members;
   if (!request.class_id.empty()) {

@@ -215,14 +215,8 @@ void export_packings(const DbExport& o, std::ostream& out) {
     out << buffer.str() << std::flush;
     return;
   }
-  std::filesystem::path dir;
-  if (into_directory) {
-    dir = o.output;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-      throw std::runtime_error("cannot write to directory '" + o.output + "'");
-  }
+  const std::filesystem::path dir =
+      into_directory ? writable_directory(o.output) : std::filesystem::path();
   for (const auto& r : selected) {
     const std::filesystem::path path = into_directory ? dir / (r.label + chosen.extensions.front())
                                                       : std::filesystem::path(o.output);
