@@ -1,9 +1,11 @@
 #include "exact/configuration.hpp"
 
 #include <flint/fmpq_mat.h>
+#include <flint/fmpz_poly.h>
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -41,35 +43,49 @@ Balls powers_of(const arb_t x, int count, slong prec) {
 // digits that is not a true one misses by about 10^-(its digits) there). No "few digits" rule
 // beyond that: every element found is verified exactly afterwards (the identities in K), so a
 // spurious relation can only fail, never prove.
-std::optional<std::vector<std::string>> combination_of(
-    const arb_t value, const arb_t value2, const std::function<Balls(int, slong)>& basis,
-    int digits, int largest) {
+//
+// `values` are candidates tried in turn at each number of digits (each a D-digit and a 2D-digit
+// ball): the value itself, and the value times P'(d), whose coefficients in the basis d^a are far
+// smaller (docs/exact.md, "Coordinates"). The result names the candidate that gave it.
+struct Combination {
+  std::size_t candidate = 0;
+  std::vector<std::string> coefficients;
+};
+using Candidates = std::vector<std::array<const arb_struct*, 2>>;
+
+std::optional<Combination> combination_of(const Candidates& values,
+                                          const std::function<Balls(int, slong)>& basis, int digits,
+                                          int largest) {
   const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
   const Balls balls = basis(0, prec), balls2 = basis(1, prec2);
-  std::vector<const arb_struct*> values{value};
-  for (const auto& b : balls) values.push_back(b->value);
   std::vector<int> ladder;
   for (int use = 100; use < std::min(digits, largest); use *= 2) ladder.push_back(use);
   if (largest >= digits) ladder.push_back(digits);
   std::optional<std::vector<std::string>> found;
+  std::size_t which = 0;
   Arb sum, term;
   flint::Fmpz c;
   for (int use : ladder) {
-    const int scale = use - 10;
-    double used = 0;
-    auto relation = flint::integer_relation(values, scale, flint::bits_for(use), used);
-    if (!relation || relation->front() == "0" || used > 0.9 * scale) continue;
-    arb_zero(sum.value);
-    for (std::size_t i = 0; i < relation->size(); ++i) {
-      fmpz_set_str(c.value, (*relation)[i].c_str(), 10);
-      arb_mul_fmpz(term.value, i == 0 ? value2 : balls2[i - 1]->value, c.value, prec2);
-      arb_add(sum.value, sum.value, term.value, prec2);
+    for (std::size_t v = 0; v < values.size() && !found; ++v) {
+      std::vector<const arb_struct*> row{values[v][0]};
+      for (const auto& b : balls) row.push_back(b->value);
+      const int scale = use - 10;
+      double used = 0;
+      auto relation = flint::integer_relation(row, scale, flint::bits_for(use), used);
+      if (!relation || relation->front() == "0" || used > 0.9 * scale) continue;
+      arb_zero(sum.value);
+      for (std::size_t i = 0; i < relation->size(); ++i) {
+        fmpz_set_str(c.value, (*relation)[i].c_str(), 10);
+        arb_mul_fmpz(term.value, i == 0 ? values[v][1] : balls2[i - 1]->value, c.value, prec2);
+        arb_add(sum.value, sum.value, term.value, prec2);
+      }
+      if (!arb_contains_zero(sum.value)) continue;
+      if (relation->front()[0] == '-')  // sign: c_0 > 0
+        for (auto& e : *relation) e = e[0] == '-' ? e.substr(1) : (e == "0" ? e : "-" + e);
+      found = relation;
+      which = v;
     }
-    if (!arb_contains_zero(sum.value)) continue;
-    if (relation->front()[0] == '-')  // sign: c_0 > 0
-      for (auto& e : *relation) e = e[0] == '-' ? e.substr(1) : (e == "0" ? e : "-" + e);
-    found = relation;
-    break;
+    if (found) break;
   }
   if (!found) return std::nullopt;
   const auto& coefficients = *found;
@@ -85,7 +101,7 @@ std::optional<std::vector<std::string>> combination_of(
     combination.emplace_back(text);
     flint_free(text);
   }
-  return combination;
+  return Combination{which, std::move(combination)};
 }
 
 // The value as an element of Q(t): a combination of 1, t, ..., t^(k-1).
@@ -93,10 +109,10 @@ std::optional<RationalPolynomial> express_in_field(const arb_t value, const arb_
                                                    const arb_t t, const arb_t t2, int k, int digits,
                                                    int largest) {
   const auto combination = combination_of(
-      value, value2, [&](int pass, slong prec) { return powers_of(pass ? t2 : t, k, prec); },
+      {{value, value2}}, [&](int pass, slong prec) { return powers_of(pass ? t2 : t, k, prec); },
       digits, largest);
   if (!combination) return std::nullopt;
-  return RationalPolynomial{*combination};
+  return RationalPolynomial{combination->coefficients};
 }
 
 void decimal_to_fmpq(fmpq_t out, std::string text, int keep_digits) {
@@ -380,21 +396,65 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   auto k0_of = [&](std::vector<std::string> coefficients) {
     return tower ? to_t->in_t(coefficients) : RationalPolynomial{std::move(coefficients)};
   };
+  // mu = P'(d): an element v of K0 is also looked for as v mu, whose coefficients in d^a (and
+  // sqrt3 d^a) have far fewer digits (for an algebraic integer d, mu times the ring of integers
+  // lies in Z[d]; t39a's x_1: 16 digits against 56, docs/exact.md), and then divided by mu
+  // exactly in Q[d]/(P).
+  const flint::Field q_of_d(d_poly.polynomial);
+  FmpqPoly mu_inverse;
+  Arb mu, mu2;
+  bool scaled = false;
+  if (m > 1) {
+    FmpzPoly derivative;
+    fmpz_poly_derivative(derivative.value, p.value);
+    FmpqPoly dq;
+    fmpq_poly_set_fmpz_poly(dq.value, derivative.value);
+    scaled = q_of_d.inverse(mu_inverse.value, dq.value);
+    arb_fmpz_poly_evaluate_arb(mu.value, derivative.value, d.value, prec);
+    arb_fmpz_poly_evaluate_arb(mu2.value, derivative.value, d2.value, prec2);
+  }
+  // The K0 coefficients of v from those of v mu (tower: a_0..a_{m-1}, b_0..b_{m-1} in d; else
+  // the powers of t = d).
+  auto unscaled = [&](std::vector<std::string> coefficients) {
+    const std::size_t parts = coefficients.size() / static_cast<std::size_t>(m);
+    std::vector<std::string> out;
+    for (std::size_t part = 0; part < parts; ++part) {
+      const auto first = coefficients.begin() + static_cast<std::ptrdiff_t>(part * m);
+      FmpqPoly a;
+      flint::fmpq_poly_from_strings(a.value, {first, first + m});
+      q_of_d.mul(a.value, a.value, mu_inverse.value);
+      auto c = flint::strings_from_fmpq_poly(a.value).coefficients;
+      c.resize(static_cast<std::size_t>(m), "0");
+      out.insert(out.end(), c.begin(), c.end());
+    }
+    return out;
+  };
+  // The candidates for v: itself, and v mu when P'(d) is invertible (always, P irreducible).
+  Arb vm, vm2;
+  auto candidates = [&](const arb_t v, const arb_t v2) {
+    Candidates c{{v, v2}};
+    if (scaled) {
+      arb_mul(vm.value, v, mu.value, prec);
+      arb_mul(vm2.value, v2, mu2.value, prec2);
+      c.push_back({vm.value, vm2.value});
+    }
+    return c;
+  };
   // The extension, once there is one: w's balls and alpha, beta (in t).
   Arb w, w2;
   bool extended = false;
   RationalPolynomial alpha, beta;
   auto in_k0 = [&](const arb_t v, const arb_t v2,
                    int largest) -> std::optional<RationalPolynomial> {
-    const auto c = combination_of(v, v2, k0_basis, digits, largest);
+    const auto c = combination_of(candidates(v, v2), k0_basis, digits, largest);
     if (!c) return std::nullopt;
-    return k0_of(*c);
+    return k0_of(c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients);
   };
   // v = a + b w with a, b in K0.
   auto in_l = [&](const arb_t v, const arb_t v2,
                   int largest) -> std::optional<std::array<RationalPolynomial, 2>> {
     const auto c = combination_of(
-        v, v2,
+        candidates(v, v2),
         [&](int pass, slong p) {
           Balls basis = k0_basis(pass, p);
           const std::size_t size = basis.size();
@@ -406,8 +466,9 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
         },
         digits, largest);
     if (!c) return std::nullopt;
-    const auto half = c->begin() + static_cast<std::ptrdiff_t>(c->size() / 2);
-    return std::array<RationalPolynomial, 2>{k0_of({c->begin(), half}), k0_of({half, c->end()})};
+    const auto e = c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients;
+    const auto half = e.begin() + static_cast<std::ptrdiff_t>(e.size() / 2);
+    return std::array<RationalPolynomial, 2>{k0_of({e.begin(), half}), k0_of({half, e.end()})};
   };
   auto add = [](const RationalPolynomial& a, const RationalPolynomial& b) {
     FmpqPoly x, y;

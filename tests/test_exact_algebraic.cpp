@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "exact/algebraic.hpp"
 #include "exact/configuration.hpp"
@@ -137,6 +138,62 @@ TEST(ExactConfiguration, CoordinatesOutsideQdSqrt3GetAQuadraticExtension) {
   const ExactConfiguration c = prove_existence(in, p);
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 4);  // [Q(sqrt3, sqrt2) : Q]
+  EXPECT_LT(c.largest_offset, 1e-25);
+}
+
+// Two disks on the bottom side, A = (a, 0) and B = (a + d, 0), with d = 1/(5 + 3^(1/11)) (P below,
+// degree 11: (1 - 5x)^11 - 3x^11 divided by its content, from y = 1/x - 5, y^11 = 3; irreducible by
+// Eisenstein at 3) and a = -(1 + d) / (2^20 P'(d)). In the tower basis d^i, sqrt3 d^i, a's integer
+// relation has ~20-digit coefficients (PARI: the numerators of (1 + d)/P'(d) mod P), so 24 of
+// them need ~480 digits; a P'(d) = -(1 + d)/2^20 needs ~150. From D = 300 digits statement (I)
+// is proven only by looking for a P'(d) (docs/exact.md, "Coordinates").
+TEST(ExactConfiguration, ACoordinateWithALargeDenominatorIsFoundAsItsMultipleByPPrime) {
+  const int digits = 300;
+  const mpfr_prec_t bits = 4000;
+  mpfr_t y, d, slope, a, term;
+  for (mpfr_ptr v : {y, d, slope, a, term}) mpfr_init2(v, bits);
+  mpfr_set_ui(y, 3, MPFR_RNDN);
+  mpfr_rootn_ui(y, y, 11, MPFR_RNDN);
+  mpfr_add_ui(y, y, 5, MPFR_RNDN);
+  mpfr_ui_div(d, 1, y, MPFR_RNDN);
+  const std::vector<long> p = {1,       -55,       1375,     -20625,     206250,    -1443750,
+                               7218750, -25781250, 64453125, -107421875, 107421875, -48828128};
+  mpfr_set_ui(slope, 0, MPFR_RNDN);  // P'(d) by Horner
+  for (std::size_t i = p.size() - 1; i >= 1; --i) {
+    mpfr_mul(slope, slope, d, MPFR_RNDN);
+    mpfr_add_si(slope, slope, p[i] * static_cast<long>(i), MPFR_RNDN);
+  }
+  mpfr_add_ui(a, d, 1, MPFR_RNDN);
+  mpfr_div(a, a, slope, MPFR_RNDN);
+  mpfr_div_2ui(a, a, 20, MPFR_RNDN);
+  mpfr_neg(a, a, MPFR_RNDN);
+  mpfr_add(term, a, d, MPFR_RNDN);
+  auto fixed = [](mpfr_t x, int decimals) {
+    char* text = nullptr;
+    mpfr_asprintf(&text, "%.*Rf", decimals, x);
+    std::string s(text);
+    mpfr_free_str(text);
+    return s;
+  };
+  const std::string d_text = fixed(d, 2 * digits), a_text = fixed(a, 2 * digits),
+                    b_text = fixed(term, 2 * digits);
+  for (mpfr_ptr v : {y, d, slope, a, term}) mpfr_clear(v);
+  ASSERT_GT(std::stod(a_text), 0.3);  // both centres well inside the bottom side
+  ASSERT_LT(std::stod(b_text), 0.7);
+  MinimalPolynomial poly;
+  poly.found = true;
+  for (long c : p) poly.polynomial.coefficients.push_back(std::to_string(c));
+  poly.root = {"1637/10000", "1639/10000"};  // P's only real root (y^11 = 3 has one)
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
+  in.d = d_text;
+  in.points = {{a_text, "0"}, {b_text, "0"}};
+  in.given = {{a_text.substr(0, 34), "0"}, {b_text.substr(0, 34), "0"}};
+  in.digits = digits;
+  const ExactConfiguration c = prove_existence(in, poly);
+  ASSERT_TRUE(c.proven) << c.reason;
+  EXPECT_EQ(c.field.degree(), 22);  // Q(d, sqrt3): sqrt3 is not in Q(d), of odd degree
   EXPECT_LT(c.largest_offset, 1e-25);
 }
 
