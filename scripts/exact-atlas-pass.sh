@@ -9,7 +9,8 @@
 # Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
 #   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
 # ATLAS.csv = rank1: only the best packing of each n (data/atlas.csv's rank-1 rows, written to
-# data/atlas-rank1.csv, which is not kept in git: it is made again from data/atlas.csv each time).
+# data/atlas-rank1.csv, which is not kept in git: it is made again from data/atlas.csv each time);
+# ATLAS.csv = labels=L1,L2,...: only those rows (data/atlas-selected.csv, not kept in git either).
 set -u
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 TRIPACK=${TRIPACK:-$root/build/tripack}
@@ -18,6 +19,11 @@ shift 5
 if [ "$atlas" = rank1 ]; then
   atlas=$root/data/atlas-rank1.csv
   awk -F, 'NR == 1 || $2 == 1' "$root/data/atlas.csv" >"$atlas"
+elif [ "${atlas#labels=}" != "$atlas" ]; then
+  wanted=${atlas#labels=}
+  atlas=$root/data/atlas-selected.csv
+  awk -F, -v wanted="$wanted" 'BEGIN { split(wanted, w, ","); for (i in w) keep[w[i]] = 1 }
+    NR == 1 || ($3 in keep)' "$root/data/atlas.csv" >"$atlas"
 fi
 log=$root/data/exact-atlas-runs.log
 [ -f "$log" ] || echo "# n first_digits digits max_degree time_limit_s wall_s exit_status" >"$log"
