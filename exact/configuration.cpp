@@ -444,8 +444,27 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   Arb w, w2;
   bool extended = false;
   RationalPolynomial alpha, beta;
+  // In the tower, Q(d) and sqrt3 Q(d) are tried first (half the lattice dimension, so about half
+  // the digits and a sixteenth of LLL's time): along lattice directions and walls, x is in Q(d)
+  // and y in sqrt3 Q(d); only the other coordinates need the whole basis.
   auto in_k0 = [&](const arb_t v, const arb_t v2,
                    int largest) -> std::optional<RationalPolynomial> {
+    for (int half = 0; tower && half < 2; ++half) {
+      const auto c = combination_of(
+          candidates(v, v2),
+          [&](int pass, slong p) {
+            Balls full = k0_basis(pass, p), part;
+            for (int i = 0; i < m; ++i)
+              part.push_back(std::move(full[static_cast<std::size_t>(half * m + i)]));
+            return part;
+          },
+          digits, largest);
+      if (!c) continue;
+      std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
+      std::copy(c->coefficients.begin(), c->coefficients.end(),
+                e.begin() + static_cast<std::ptrdiff_t>(half * m));
+      return k0_of(c->candidate == 1 ? unscaled(e) : e);
+    }
     const auto c = combination_of(candidates(v, v2), k0_basis, digits, largest);
     if (!c) return std::nullopt;
     return k0_of(c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients);
