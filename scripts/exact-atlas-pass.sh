@@ -5,7 +5,8 @@
 # is resumable: rerun it and the rows already proven are skipped. Every row's wall time and exit
 # status go to data/exact-atlas-runs.log (status 124 or 137: stopped at the time limit). Run it
 # with TRIPACK= a copy of the binary: a rebuild under a running pass makes the later rows fail to
-# start (exit 126).
+# start (exit 126). For the same reason never edit this script in place while a pass runs (bash
+# reads a script as it goes): write the new version beside it and rename it over this one.
 # Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
 #   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
 # ATLAS.csv = rank1: only the best packing of each n (data/atlas.csv's rank-1 rows, written to
