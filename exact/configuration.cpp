@@ -383,14 +383,17 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     }
   }
   // K0's search basis (the tower's d^a, sqrt3 d^a, or t's powers) and its conversion to t.
-  auto k0_basis = [&](int pass, slong p) {
+  // In the tower, `part` 0 gives only d^a (Q(d)), 1 only sqrt3 d^a, -1 both.
+  auto k0_basis = [&](int pass, slong p, int part = -1) {
     if (!tower) return powers_of(pass ? t2.value : t.value, k, p);
     Balls basis = powers_of(pass ? d2.value : d.value, m, p);
+    if (part == 0) return basis;
     for (int i = 0; i < m; ++i) {
       basis.push_back(std::make_unique<Arb>());
       arb_mul(basis.back()->value, basis[static_cast<std::size_t>(i)]->value,
               pass ? s2.value : s.value, p);
     }
+    if (part == 1) basis.erase(basis.begin(), basis.begin() + m);
     return basis;
   };
   auto k0_of = [&](std::vector<std::string> coefficients) {
@@ -451,14 +454,8 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
                    int largest) -> std::optional<RationalPolynomial> {
     for (int half = 0; tower && half < 2; ++half) {
       const auto c = combination_of(
-          candidates(v, v2),
-          [&](int pass, slong p) {
-            Balls full = k0_basis(pass, p), part;
-            for (int i = 0; i < m; ++i)
-              part.push_back(std::move(full[static_cast<std::size_t>(half * m + i)]));
-            return part;
-          },
-          digits, largest);
+          candidates(v, v2), [&](int pass, slong p) { return k0_basis(pass, p, half); }, digits,
+          largest);
       if (!c) continue;
       std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
       std::copy(c->coefficients.begin(), c->coefficients.end(),
