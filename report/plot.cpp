@@ -34,6 +34,12 @@ constexpr std::array<std::string_view, 8> kColours = {"#0072b2", "#d55e00", "#00
                                                       "#e69f00", "#56b4e9", "#000000", "#999933"};
 constexpr int kDashTypes = 5;  // gnuplot's dt 1..5 differ on every terminal
 
+// The delta plot's key, below the graph: in kKeyColumns columns of kKeyRowPixels-high rows (at
+// the SVG's 12 points), the canvas as much taller than kCanvasHeight as the rows need.
+constexpr std::size_t kKeyColumns = 3;
+constexpr int kKeyRowPixels = 18;
+constexpr int kCanvasHeight = 650;
+
 std::string style_line(std::size_t i, std::string_view points) {
   return fmt::format("set style line {} lc rgb '{}' dt {} lw 1.5 {}\n", i + 1,
                      kColours[i % kColours.size()], 1 + (i / kColours.size()) % kDashTypes, points);
@@ -183,14 +189,19 @@ void fix_pdf_dates(const fs::path& pdf) {
 }
 
 // The three terminals, each followed by the plot (the first) or `replot`. The PNG and the SVG
-// share a pixel size; fonts are the generic sans-serif, which fontconfig and browsers both map.
-std::string terminals(const std::string& name, const std::string& plot) {
+// share a pixel size (1200 x `height`; the PDF 1 in per 100 pixels); fonts are the generic
+// sans-serif, which fontconfig and browsers both map.
+std::string terminals(const std::string& name, const std::string& plot,
+                      int height = kCanvasHeight) {
   std::string s;
-  s += "set terminal svg size 1200,650 font 'sans-serif,12' background rgb 'white'\n";
+  s += fmt::format("set terminal svg size 1200,{} font 'sans-serif,12' background rgb 'white'\n",
+                   height);
   s += "set output " + gp_string(name + ".svg") + "\n" + plot;
-  s += "set terminal pngcairo size 1200,650 font 'sans-serif,11' background rgb 'white'\n";
+  s += fmt::format(
+      "set terminal pngcairo size 1200,{} font 'sans-serif,11' background rgb 'white'\n", height);
   s += "set output " + gp_string(name + ".png") + "\nreplot\n";
-  s += "set terminal pdfcairo size 12in,6.5in font 'sans-serif,11' pointscale 0.6\n";
+  s += fmt::format("set terminal pdfcairo size 12in,{}in font 'sans-serif,11' pointscale 0.6\n",
+                   height / 100.0);
   s += "set output " + gp_string(name + ".pdf") + "\nreplot\nunset output\n";
   return s;
 }
@@ -362,15 +373,22 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   gp += fmt::format("set yrange [{:.6g}:{:.6g}]\n", y_lo - 0.04 * span, y_hi + 0.06 * span);
   gp += log_tics(n_lo / 1.15, n_hi * 1.15);
   gp += "set grid xtics ytics lc rgb '#e0e0e0'\n";
-  gp +=
-      "# Fixed right margin and key position: gnuplot's estimate of the text widths of the key "
-      "and\n";
-  gp +=
-      "# of the right-axis label leaves half the canvas empty. The plot ends at 68% of the "
-      "width,\n";
-  gp += "# the label naming the limit line sits right of it, the key right of that.\n";
-  gp += "set rmargin at screen 0.68\n";
-  gp += "set key at screen 0.79, graph 1 left top Left reverse samplen 2 noenhanced\n\n";
+  // The key: one entry per class line and per marker kind drawn, and the limit line; below the
+  // graph, in columns. On the right in one column, 30 classes ran off the bottom of the picture,
+  // and with them the entries of the markers, listed last.
+  const std::size_t entries = classes.size() + std::size_t(classless) + std::size_t(billiards) +
+                              std::size_t(proven) + std::size_t(atlas) + 1;
+  const std::size_t key_rows = (entries + kKeyColumns - 1) / kKeyColumns;
+  const int height = kCanvasHeight + static_cast<int>(key_rows) * kKeyRowPixels + 20;
+  gp += fmt::format("# The key below the graph, in columns of at most {} entries (the canvas is\n",
+                    key_rows);
+  gp += "# as much taller as they need); the graph ends at 88% of the width, the label naming\n";
+  gp += "# the limit line on the right axis sits right of it.\n";
+  gp += "set rmargin at screen 0.8833\n";
+  gp += fmt::format(
+      "set key outside below center vertical maxrows {} Left reverse samplen 2 noenhanced "
+      "width 2\n\n",
+      key_rows);
   gp +=
       "# Both delta(4Delta(k)) and delta(2Delta(k+1)+2Delta(k)-1) tend to sqrt(3) - 3/2 "
       "(GL1995, sec. 6).\n";
@@ -381,12 +399,10 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   gp += "set link y2\n";
   gp += "set y2tics ('sqrt(3) - 3/2' limit) tc rgb 'gray30'\n";
   gp += "set style line 104 lc rgb 'gray40' dt 2 lw 1\n\n";
+  gp += "# Drawn in this order, each with its key entry: the class lines, then the markers, the\n";
+  gp += "# atlas's small grey dots last, on top of the squares, crosses and rings around them.\n";
 
   std::vector<std::string> clauses;
-  if (atlas) {  // first, so that the classes draw over it
-    clauses.push_back(
-        "data skip 1 using 1:($7 == 1 ? $2 : NaN) with points ls 105 title 'atlas best'");
-  }
   if (!classes.empty()) {
     clauses.push_back(
         "for [i=1:|classes|] data skip 1 using 1:($4 == i && $6 == 0 ? $2 : NaN) \\\n"
@@ -394,19 +410,25 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   }
   if (classless) {
     clauses.push_back(
-        "data skip 1 using 1:($4 == 0 && $7 == 0 ? $2 : NaN) with points ls 101 title 'in no "
-        "class'");
+        "data skip 1 using 1:($4 == 0 && $7 == 0 ? $2 : NaN) with points ls 101 "
+        "title 'in no class: best found'");
   }
   if (billiards) {
     clauses.push_back(
-        "data skip 1 using 1:($6 == 1 ? $2 : NaN) with points ls 102 title 'billiards best'");
+        "data skip 1 using 1:($6 == 1 ? $2 : NaN) with points ls 102 "
+        "title 'best of the billiards runs'");
   }
   if (proven) {
     clauses.push_back(
-        "data skip 1 using 1:($5 == 1 ? $2 : NaN) with points ls 103 title 'proven optimum'");
+        "data skip 1 using 1:($5 == 1 ? $2 : NaN) with points ls 103 "
+        "title 'proven optimum'");
+  }
+  if (atlas) {
+    clauses.push_back(
+        "data skip 1 using 1:($7 == 1 ? $2 : NaN) with points ls 105 title 'atlas best known'");
   }
   clauses.push_back("limit with lines ls 104 title 'limit of delta(4Delta(k))'");
-  gp += terminals(name, join_plot(clauses));
+  gp += terminals(name, join_plot(clauses), height);
   render(dir, name, csv, gp);
 }
 

@@ -34,14 +34,16 @@ struct AccuracyPoint {
 // NAME.pdf in `dir`. Throws a one-line std::runtime_error naming the package (gnuplot-nox)
 // when gnuplot is missing, and one naming the file when a write fails.
 //
-// Delta plot layers: one line style per class joining its members (billiards == false) in n
-// order; open squares for class_id == ""; a cross on every billiards point (never joined: it is
-// a measurement, not a member of the class's formula); a small grey dot at every atlas point
-// (atlas == true, class_id ""); a ring around every proven point. A point
-// in several classes is passed once per class. Log-scale n. Accuracy plot: one joined series per
-// name, in seconds order, log-scale seconds; points with seconds <= 0 stay in the CSV but cannot
-// be drawn on the log axis. Both keep the order in which classes / series first appear.
-// Non-finite values, n < 1 and an empty point list are std::invalid_argument.
+// Delta plot layers, drawn in this order: one line style per class joining its members
+// (billiards == false) in n order; open squares for class_id == ""; a cross on every billiards
+// point (never joined: it is a measurement, not a member of the class's formula); a ring around
+// every proven point; last, on top, a small grey dot at every atlas point (atlas == true,
+// class_id ""). Every layer has its entry in the key, below the graph in three columns
+// (the canvas grows taller with the number of classes). A point in several classes is passed once
+// per class. Log-scale n. Accuracy plot: one joined series per name, in seconds order, log-scale
+// seconds; points with seconds <= 0 stay in the CSV but cannot be drawn on the log axis. Both keep
+// the order in which classes / series first appear. Non-finite values, n < 1 and an empty point
+// list are std::invalid_argument.
 void plot_delta(const std::vector<DeltaPoint>& points, const std::filesystem::path& dir,
                 const std::string& name = "delta");
 void plot_accuracy(const std::vector<AccuracyPoint>& points, const std::filesystem::path& dir,

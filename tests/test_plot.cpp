@@ -1,9 +1,11 @@
 // report/plot: the delta(n) and accuracy plots through gnuplot, on a small synthetic data set
 // (Delta(k) at delta 0, 4Delta(k) from the closed form L = 2k - 2 + sqrt(3), a few classless n).
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -138,8 +140,9 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
   EXPECT_NE(gp.find("limit = sqrt(3) - 1.5"), std::string::npos);
   expect_pictures(dir, "delta");
   const std::string svg = slurp(dir / "delta.svg");
-  for (const char* legend : {"hexagonal", "four-delta", "in no class", "billiards best",
-                             "proven optimum", "limit of delta(4Delta(k))"}) {
+  for (const char* legend :
+       {"hexagonal", "four-delta", "in no class: best found", "best of the billiards runs",
+        "proven optimum", "limit of delta(4Delta(k))"}) {
     EXPECT_NE(svg.find(std::string("<text>") + legend + "</text>"), std::string::npos) << legend;
   }
   fs::remove_all(dir);
@@ -165,7 +168,130 @@ TEST(Plot, AtlasPointsHaveTheirOwnColumnAndLegend) {
   EXPECT_EQ(atlas_rows, 3);
   const std::string gp = slurp(dir / "delta.gp");
   EXPECT_NE(gp.find("($4 == 0 && $7 == 0 ? $2 : NaN)"), std::string::npos);
-  EXPECT_NE(slurp(dir / "delta.svg").find("<text>atlas best</text>"), std::string::npos);
+  EXPECT_NE(slurp(dir / "delta.svg").find("<text>atlas best known</text>"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// The clauses of the script's first `plot` command, continuation lines joined, split at the
+// commas outside quotes, brackets and parentheses.
+std::vector<std::string> plot_clauses(const std::string& gp) {
+  const auto all = lines(gp);
+  std::string command;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (command.empty() && all[i].rfind("plot ", 0) != 0) continue;
+    std::string line = all[i];
+    const bool more = !line.empty() && line.back() == '\\';
+    if (more) line.pop_back();
+    command += line;
+    if (!more) break;
+  }
+  std::vector<std::string> clauses;
+  std::string clause;
+  int depth = 0;
+  bool quoted = false;
+  for (char c : command.substr(command.empty() ? 0 : 5)) {
+    if (c == '\'') quoted = !quoted;
+    if (!quoted && (c == '(' || c == '[')) ++depth;
+    if (!quoted && (c == ')' || c == ']')) --depth;
+    if (!quoted && depth == 0 && c == ',') {
+      clauses.push_back(clause);
+      clause.clear();
+    } else {
+      clause += c;
+    }
+  }
+  if (!clause.empty()) clauses.push_back(clause);
+  return clauses;
+}
+
+// The title of a clause: a non-empty quoted string or classes[i]; "" when it has none.
+std::string clause_title(const std::string& clause) {
+  if (clause.find("notitle") != std::string::npos) return "";
+  const auto at = clause.find(" title ");
+  if (at == std::string::npos) return "";
+  std::string title = clause.substr(at + 7);
+  title.erase(title.find_last_not_of(" ") + 1);
+  if (title == "classes[i]") return title;
+  if (title.size() < 3 || title.front() != '\'' || title.back() != '\'') return "";
+  return title.substr(1, title.size() - 2);
+}
+
+// Every layer drawn with points has a key entry that says what it is, and the atlas's grey dots
+// are drawn last, on top of the squares, crosses and rings at the same n (they were drawn
+// first, hidden under them).
+TEST(Plot, EveryMarkerKindHasAKeyEntryAndTheAtlasIsOnTop) {
+  const fs::path dir = scratch("delta-key");
+  std::vector<DeltaPoint> points = synthetic();
+  for (long long n : {18, 23, 50}) points.push_back({n, 0.37, "", false, false, true});
+  plot_delta(points, dir);
+  const auto clauses = plot_clauses(slurp(dir / "delta.gp"));
+  ASSERT_GE(clauses.size(), 6u);
+  std::vector<std::string> marker_styles;
+  for (const auto& clause : clauses) {
+    if (clause.find("with points") == std::string::npos &&
+        clause.find("with linespoints") == std::string::npos)
+      continue;
+    EXPECT_NE(clause_title(clause), "") << "a layer without a key entry: " << clause;
+    const auto ls = clause.find(" ls ");
+    ASSERT_NE(ls, std::string::npos) << clause;
+    marker_styles.push_back(clause.substr(ls + 4, clause.find(' ', ls + 4) - ls - 4));
+  }
+  // Classes (ls i), open squares (101), crosses (102), rings (103), atlas dots (105) last.
+  EXPECT_EQ(marker_styles, (std::vector<std::string>{"i", "101", "102", "103", "105"}));
+  for (const auto& clause : clauses) {
+    if (clause.find("ls 101") != std::string::npos) {
+      EXPECT_NE(clause_title(clause).find("no class"), std::string::npos) << clause;
+    }
+    if (clause.find("ls 102") != std::string::npos) {
+      EXPECT_NE(clause_title(clause).find("billiards"), std::string::npos) << clause;
+    }
+    if (clause.find("ls 103") != std::string::npos) {
+      EXPECT_NE(clause_title(clause).find("proven"), std::string::npos) << clause;
+    }
+    if (clause.find("ls 105") != std::string::npos) {
+      EXPECT_NE(clause_title(clause).find("atlas"), std::string::npos) << clause;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// With as many class lines as the explorer draws (31 at max-n 200), every key entry is in the
+// picture: a single key column ran off the canvas's bottom edge, and gnuplot left out the
+// entries of the squares, crosses, rings and atlas dots (listed after the classes).
+TEST(Plot, KeyOfManyClassesFitsInThePicture) {
+  const fs::path dir = scratch("delta-many");
+  std::vector<DeltaPoint> points = synthetic();
+  std::vector<std::string> legends = {"hexagonal", "four-delta"};
+  for (int p = 1; p <= 29; ++p) {
+    const std::string line = fmt::format("vacancy-segment p={}", p);
+    legends.push_back(line);
+    for (long long n : {30 + p, 60 + p}) points.push_back({n, 0.3 + 0.001 * p, line});
+  }
+  for (long long n : {18, 23, 50}) points.push_back({n, 0.37, "", false, false, true});
+  for (const char* marker : {"in no class: best found", "best of the billiards runs",
+                             "proven optimum", "atlas best known", "limit of delta(4Delta(k))"})
+    legends.push_back(marker);
+  plot_delta(points, dir);
+  const std::string svg = slurp(dir / "delta.svg");
+  const auto box = svg.find("viewBox=\"0 0 ");
+  ASSERT_NE(box, std::string::npos);
+  double width = 0, height = 0;
+  ASSERT_EQ(std::sscanf(svg.c_str() + box, "viewBox=\"0 0 %lf %lf", &width, &height), 2);
+  for (const auto& legend : legends) {
+    const auto text = svg.find("<text>" + legend + "</text>");
+    ASSERT_NE(text, std::string::npos) << "no key entry '" << legend << "' in the picture";
+    // The text's position: the last translate(x,y) before it.
+    const auto at = svg.rfind("translate(", text);
+    ASSERT_NE(at, std::string::npos);
+    double x = -1, y = -1;
+    ASSERT_EQ(std::sscanf(svg.c_str() + at, "translate(%lf,%lf)", &x, &y), 2);
+    // A key entry's text starts at x and runs about 7 pixels a character at 12 points.
+    EXPECT_GT(x, 0) << legend;
+    EXPECT_LT(x + 7.0 * static_cast<double>(legend.size()), width) << legend;
+    EXPECT_GT(y, 0) << legend;
+    EXPECT_LT(y, height) << legend;
+  }
+  expect_pictures(dir, "delta");
   fs::remove_all(dir);
 }
 
