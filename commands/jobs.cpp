@@ -31,7 +31,7 @@ class Explore : public Command {
 
  private:
   jobs::ExploreSettings settings;
-  std::string out = "report";
+  std::string out = "out/report";
   std::string atlas;  // empty: the installed atlas when there is one; "none": no atlas
 
  public:

@@ -237,13 +237,16 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
   }
   h << fmt::format(
       "<h2 id=\"atlas\">Atlas: the best certified packing of every n = {}..{}</h2>\n<p>From "
-      "<a href=\"atlas/atlas.csv\">atlas.csv</a> ({} rows; copied from the project's {}): "
+      "<a href=\"atlas/atlas.csv\">atlas.csv</a> ({} rows; copied from {}): "
       "billiards campaigns "
       "and every builder whose class contains n, each certified again from its coordinates and "
       "polished in MPFR to 30 digits; every file is in <a href=\"atlas/atlas/\">atlas/atlas/</a>. "
       "In the &delta;(n) plot above its values are the grey dots.</p>\n",
       first, last, atlas.rows.size(),
-      html_escape((atlas.csv.parent_path().filename() / atlas.csv.filename()).string()));
+      atlas.csv.parent_path().filename() == "tripack" &&
+              atlas.csv.parent_path().parent_path().filename() == "share"
+          ? std::string("the installed share/tripack/atlas.csv, the repository's data/atlas.csv")
+          : html_escape(atlas.csv.string()));
   h << "<h3>Where the atlas beats every builder of n</h3>\n<table><tr><th>n</th><th>best "
        "builder</th><th>d builder</th><th>atlas</th><th>d atlas</th><th>gain</th><th>bonds</th>"
        "<th>rattlers</th><th>source</th></tr>\n";
