@@ -76,7 +76,9 @@ class Explore : public Command {
                                jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
     }
     const CancelToken never;
-    report::ProgressLine progress(std::cerr, job_line(kInfo.name, 0));
+    auto line = job_line(kInfo.name, 0);
+    line.log_stages = true;  // a log gets one line per stage: building, search, billiards, ...
+    report::ProgressLine progress(std::cerr, line);
     const auto result =
         jobs::explore(catalogue, settings, c.cancel ? *c.cancel : never, progress.callback());
     progress.finish();

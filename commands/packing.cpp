@@ -113,8 +113,11 @@ class Analyze : public Command {
     for (const auto& warning : result.warnings)
       std::cerr << "tripack: warning: " << warning << "\n";
     print_result(result, out);
-    if (!output.empty())
-      write_packing_file(output, pipeline::record_of(result.analysis), file_digits(request.digits));
+    if (!output.empty()) {
+      PackingRecord record = pipeline::record_of(result.analysis);
+      record.label = result.label;  // the label read is the label written
+      write_packing_file(output, record, file_digits(request.digits));
+    }
     diagrams.draw(result.analysis.pattern, std::filesystem::path(request.file).filename().string(),
                   result.analysis.stress.forces);
     return 0;

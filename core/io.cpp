@@ -225,6 +225,8 @@ struct Scanned {
   int layout_line = 0;
   std::optional<long double> declared_d;          // from "# d: ..."
   std::optional<Convention> declared_convention;  // from "# convention: NAME ..."
+  std::optional<long long> declared_n;            // from "# n: ..."
+  std::string declared_label;                     // from "# label: ..."
 };
 
 std::string_view trim(std::string_view s) {
@@ -296,6 +298,15 @@ void read_comment(std::string_view body, int line, bool text_layouts, Scanned& s
         s.declared_convention = c;
       }
     }
+  } else if (lower.starts_with("n:")) {
+    std::istringstream words(std::string(body.substr(2)));
+    std::string first;
+    if (words >> first)
+      if (const auto n = parse_integer(first)) s.declared_n = *n;
+  } else if (lower.starts_with("label:")) {
+    std::istringstream words(std::string(body.substr(6)));
+    std::string first;
+    if (words >> first) s.declared_label = first;
   } else if (lower.starts_with("d:")) {
     std::istringstream words(std::string(body.substr(2)));
     std::string first;
@@ -480,6 +491,8 @@ PointsFile read_text(std::istream& in, bool records) {
   file.layout = layout;
   file.declared_d = s.declared_d;
   file.declared_convention = s.declared_convention;
+  file.declared_n = s.declared_n;
+  file.declared_label = s.declared_label;
   return file;
 }
 
@@ -498,6 +511,8 @@ PointsFile read_csv(std::istream& in) {
   file.layout = "csv";
   file.declared_d = s.declared_d;
   file.declared_convention = s.declared_convention;
+  file.declared_n = s.declared_n;
+  file.declared_label = s.declared_label;
   if (s.rows.empty()) return file;
   const Row& first = s.rows.front();
   const bool has_header = std::any_of(first.fields.begin(), first.fields.end(), [](auto& f) {
@@ -590,6 +605,10 @@ PointsFile read_json(std::istream& in) {
     if (const auto d = json_real(j["d"]); d && *d > 0 && std::isfinite(*d)) file.declared_d = d;
   if (j.is_object() && j.contains("convention") && j["convention"].is_string())
     file.declared_convention = parse_convention(j["convention"].get<std::string>());
+  if (j.is_object() && j.contains("n") && j["n"].is_number_integer())
+    file.declared_n = j["n"].get<long long>();
+  if (j.is_object() && j.contains("label") && j["label"].is_string())
+    file.declared_label = j["label"].get<std::string>();
   if (j.is_array()) {
     file.layout = "json list";
     file.points = json_point_list(j);

@@ -89,6 +89,11 @@ struct PointsFile {
   // A "# convention: NAME ..." comment line or JSON "convention" naming one of the three
   // conventions (other words there are ignored).
   std::optional<Convention> declared_convention;
+  // A "# n: N" line or JSON "n": the number of points the file says it holds
+  // (packing_from_points refuses any other count: a truncated file is an error, not a packing).
+  std::optional<long long> declared_n;
+  // A "# label: t22a" line or JSON "label": the packing's name, carried to what is written.
+  std::string declared_label;
 };
 
 // Layouts read:
@@ -104,8 +109,8 @@ struct PointsFile {
 //  * JSON: {"points": [[x, y], ...]} (preferring "points_exact" of the same length), or
 //    {"points": [{"x": .., "y": ..}, ...]}, or a bare list of either; numbers or decimal
 //    strings, read to long double.
-// Text and CSV comment lines "# d: ..." and "# convention: NAME ..." (JSON: "d", "convention")
-// fill declared_d and declared_convention.
+// Text and CSV comment lines "# d: ...", "# convention: NAME ...", "# n: N" and "# label: L"
+// (JSON: "d", "convention", "n", "label") fill the declared_ fields.
 // Errors are InputError, one line naming the file line (JSON: the point's position).
 // The readers of the format table (formats/formats.hpp), which chooses one by extension.
 PointsFile read_text_points(std::istream& in);

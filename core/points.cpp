@@ -205,6 +205,9 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
   auto& pts = file.points;
   if (expected_n && static_cast<long long>(pts.size()) != *expected_n)
     throw InputError(fmt::format("expected {} points, the file has {}", *expected_n, pts.size()));
+  if (file.declared_n && static_cast<long long>(pts.size()) != *file.declared_n)
+    throw InputError(fmt::format("the header says n = {} but the file holds {} points (truncated?)",
+                                 *file.declared_n, pts.size()));
   if (pts.size() < 2)
     throw InputError(fmt::format("need at least 2 points, the file has {}", pts.size()));
   if (convention && file.declared_convention && *convention != *file.declared_convention)
@@ -225,6 +228,7 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
 
   PointsReading reading;
   reading.convention = c;
+  reading.label = file.declared_label;
   long double file_units_per_side = 1;  // lengths in the file per unit-triangle length
   if (c == Convention::UnitTriangle)
     snap_into_unit_triangle(pts, rounding_tolerance, reading.warnings);
@@ -248,7 +252,9 @@ PointsReading packing_from_points(PointsFile file, std::optional<Convention> con
           closest < diameter ? "overlap" : "do not touch (is r the packing's radius?)"));
   }
   // Rounding moves each point by up to the tolerance, so d by up to twice it.
-  if (file.declared_d && std::fabs(pk.d - *file.declared_d) > 2 * rounding_tolerance)
+  reading.header_d_differs =
+      file.declared_d && std::fabs(pk.d - *file.declared_d) > 2 * rounding_tolerance;
+  if (reading.header_d_differs)
     reading.warnings.push_back(fmt::format("the header's d = {} differs from the points' d = {}",
                                            format_significant(*file.declared_d, 17),
                                            format_significant(pk.d, 17)));

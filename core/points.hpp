@@ -23,6 +23,10 @@ struct PointsReading {
   // "d"), else 2r of an "x y r" file scaled like the points. packing.d below it means the
   // file's disks overlap (db import refuses that; analyze warns).
   std::optional<long double> stated_d;
+  // The header's d is farther than 2 rounding_tolerance from the points' d (a warning above;
+  // db import refuses such a file unless asked).
+  bool header_d_differs = false;
+  std::string label;  // the file's "# label:" (JSON "label"), empty when it has none
 };
 
 // `convention`: how the coordinates are meant; nullopt = the file's own "# convention:" line
@@ -38,7 +42,8 @@ struct PointsReading {
 //    relative 1e-6 of each other are an InputError. The bounding triangle maps onto the unit one.
 //  * an "x y r" file whose closest centres are not 2r apart (relative 1e-6), or a "# d:" header
 //    farther than 2 rounding_tolerance from the points' d, gives a warning.
-// Also InputErrors: fewer than 2 points, a count other than `expected_n`, coinciding points.
+// Also InputErrors: fewer than 2 points, a count other than `expected_n` or than the file's own
+// "# n:" (JSON "n"), coinciding points.
 PointsReading packing_from_points(PointsFile file, std::optional<Convention> convention,
                                   std::optional<long long> expected_n,
                                   long double rounding_tolerance = 1e-6L);

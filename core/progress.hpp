@@ -5,6 +5,7 @@
 // global: a job receives both.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -43,18 +44,29 @@ inline ProgressFn serialised(ProgressFn progress) {
   };
 }
 
-// Asked to stop: the job starts no new item; items under way finish, and its result says it was
-// cancelled and holds what finished.
+// Asked to stop, in two steps (docs/cli.md, "Ctrl-C"). Stop: the job starts no new item; items
+// under way finish, and its result says it was cancelled and holds what finished. Abandon: items
+// under way that check the token (a billiards run, every 4096 events) give up by throwing
+// Abandoned, and the job reports and records what finished before them.
 class CancelToken {
  public:
-  void cancel() { cancelled_.store(true); }
-  bool cancelled() const { return cancelled_.load(); }
-  // The first request returns false, every later one true (a second Ctrl-C ends the program).
-  bool cancel_again() { return cancelled_.exchange(true); }
+  void cancel() { level_.store(std::max(level_.load(), 1)); }
+  void abandon() { level_.store(2); }
+  bool cancelled() const { return level_.load() >= 1; }
+  bool abandoned() const { return level_.load() >= 2; }
 
  private:
-  std::atomic<bool> cancelled_{false};
+  std::atomic<int> level_{0};
 };
+
+// Thrown by an item under way that gives up on an abandoned token; the runner drops the item (it
+// did not finish). Not a std::exception, so that the handlers that turn an item's errors into
+// its result do not take it for one.
+struct Abandoned {};
+
+inline void throw_if_abandoned(const CancelToken* token) {
+  if (token && token->abandoned()) throw Abandoned{};
+}
 
 inline bool cancelled(const CancelToken* token) {
   return token && token->cancelled();

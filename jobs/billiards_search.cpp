@@ -47,9 +47,9 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
   items.run = [&](std::size_t r) {
     RunOutcome& run = runs[r];
     run.seed = search.seed + r;
-    run.ran = true;
     std::mt19937_64 rng(run.seed);
     BilliardsOptions options;
+    options.cancel = search.cancel;
     if (progress)
       options.progress = [&, r](const Progress& live) {
         Progress p = live;
@@ -65,6 +65,7 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
     } catch (const std::exception& e) {
       run.error = e.what();
     }
+    run.ran = true;  // not when abandoned (Abandoned passes through to the runner)
     return std::string();
   };
   items.finished = [&](std::size_t r, const std::string&) {

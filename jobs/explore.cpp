@@ -251,7 +251,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   builds.finished = [&](std::size_t i, const std::string&) {
     const BuildRequest& request = plan.builds[i];
     const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
-    report("build",
+    report("building",
            fmt::format(
                "{} (n = {})",
                pipeline::member_name({request.class_id, request.k, request.p, request.variant}), n),
@@ -265,7 +265,9 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   if (!cancel.cancelled()) result.stages_done.push_back("build");
 
   // Searches one n at a time, each on the runner's threads: basin hopping (one chain per
-  // thread) up to the small-n limits, billiards runs for the stress set.
+  // thread) up to the small-n limits, billiards runs for the stress set. Each n's packings are
+  // compared with its builders once every search is done (a stage of its own in the log).
+  std::vector<std::pair<long long, std::vector<PackingRecord>>> found_by_n;
   for (long long n : plan.searches) {
     if (cancel.cancelled()) break;
     const bool large = n > settings.billiards_max_n && n > settings.class_billiards_max_n;
@@ -286,7 +288,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
         const search::SearchResult found = search::run_search(search);
         for (const auto& x : found.packings)
           result.packings.push_back(packing_of_search(x, found.seconds));
-        compare_with_builders(result, n, found.packings);
+        found_by_n.emplace_back(n, found.packings);
       } catch (const std::exception& e) {
         result.errors.push_back(fmt::format("search n = {}: {}", n, e.what()));
       }
@@ -308,13 +310,17 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       const double seconds = seconds_since(t0);
       for (std::size_t i = 0; i < found.packings.size(); ++i)
         result.packings.push_back(packing_of_search(found.packings[i], seconds));
-      compare_with_builders(result, n, found.packings);
+      found_by_n.emplace_back(n, found.packings);
     } catch (const std::exception& e) {
       result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
     }
     report("billiards", fmt::format("n = {}, {} runs", n, search.runs), cost);
   }
   if (!cancel.cancelled()) result.stages_done.push_back("billiards");
+  if (!found_by_n.empty()) {
+    report("compare", fmt::format("{} n against their builders", found_by_n.size()));
+    for (const auto& [n, found] : found_by_n) compare_with_builders(result, n, found);
+  }
   if (settings.accuracy && !cancel.cancelled()) {
     try {
       AccuracySettings accuracy;

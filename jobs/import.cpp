@@ -49,6 +49,11 @@ ImportedPacking analyse_file(const ImportRequest& request, const std::string& pa
         "(the disks overlap by {:.3g} of d); refused, nothing stored",
         path, format_significant(*reading.stated_d, kLongDoubleDigits), out.d_file,
         static_cast<double>(1 - start_packing.d / *reading.stated_d)));
+  if (reading.header_d_differs && !request.accept_header_d)
+    throw ImportError(fmt::format(
+        "{}: the header's d = {} differs from the points' d = {}; refused, nothing stored "
+        "(--accept-header-d stores it)",
+        path, format_significant(*reading.stated_d, kLongDoubleDigits), out.d_file));
   const pipeline::Analysis analysis = pipeline::analyze_packing(start_packing, {});
   out.verdict = analysis.status();
   if (!analysis.certified())

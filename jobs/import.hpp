@@ -36,6 +36,7 @@ struct ImportRequest {
   std::optional<Convention> convention;  // none: as each file declares (analyze's rule)
   std::string tool_version;
   int threads = 2;                      // files analysed at once (the job runner's threads)
+  bool accept_header_d = false;         // store a file whose "# d:" differs from its points' d
   const CancelToken* cancel = nullptr;  // stops before the store: nothing is stored
   ProgressFn progress;                  // stage "import": one report per analysed file
 
@@ -46,6 +47,9 @@ struct ImportRequest {
         "--convention", [this](const std::string& s) { convention = convention_from_option(s); },
         "as the file declares, else unit-triangle", kConventionHelp);
     o.option("--threads", threads, "files analysed at once").range(1, 256);
+    o.flag("--accept-header-d", accept_header_d,
+           "store a file whose header d differs from its points' d (refused by default: the "
+           "file is not what it says it is)");
   }
 };
 

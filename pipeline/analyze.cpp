@@ -285,6 +285,7 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
       request.expected_n ? std::optional<long long>(request.expected_n) : std::nullopt);
   // As read: the file's declared convention, radius for an x y r file.
   result.convention = reading.convention;
+  result.label = reading.label;
   result.warnings = std::move(reading.warnings);
   result.read_seconds = seconds_since(start);
   AnalysisOptions options;

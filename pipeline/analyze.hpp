@@ -103,6 +103,7 @@ struct AnalyzeRequest {
 struct FileAnalysis {
   std::string file;
   std::string layout;  // how the file was read ("x y", "i x y", "csv", ...)
+  std::string label;   // the file's own "# label:" (JSON "label"); written again by analyze -o
   Convention convention = Convention::UnitTriangle;
   std::vector<std::string> warnings;  // one line each (rounded input, orientation)
   Analysis analysis;

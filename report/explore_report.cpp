@@ -214,6 +214,15 @@ bool forces_drawn(const PackingRecord& r) {
 constexpr int kDiagramPixels = 330;
 constexpr int kForcesPixels = 440;
 
+// A file of the installed data into the report: hard-linked where the file system allows (the
+// exact certificates are 175 MB together and never change), else copied.
+void link_or_copy(const fs::path& from, const fs::path& to) {
+  std::error_code ec;
+  fs::remove(to, ec);
+  fs::create_hard_link(from, to, ec);
+  if (ec) fs::copy_file(from, to, fs::copy_options::overwrite_existing);
+}
+
 std::string atlas_diagram(const PackingRecord& e) {
   return "diagrams/atlas-" + e.label + ".png";
 }
@@ -284,11 +293,15 @@ std::string html_atlas(const ExploreResult& result, const ExploreAtlas& atlas, b
       else if (it->second.proof == "none")
         exact_cells = fmt::format("<td>{}</td><td title=\"{}\">none</td>", it->second.degree,
                                   html_escape(it->second.reason));
-      else
+      else if (fs::exists(atlas.csv.parent_path() / "exact" / (e.label + ".gp")))
         exact_cells =
             fmt::format("<td title=\"{}\">{}</td><td><a href=\"atlas/exact/{}.gp\">{}</a></td>",
                         html_escape(it->second.polynomial), it->second.degree, html_escape(e.label),
                         it->second.proof);
+      else  // a proof whose certificate the installation lacks: no link to a missing file
+        exact_cells =
+            fmt::format("<td title=\"{}\">{}</td><td>{}</td>", html_escape(it->second.polynomial),
+                        it->second.degree, it->second.proof);
     }
     h << fmt::format(
         "<tr id=\"atlas-{0}\"><td>{1}</td><td>{0}</td><td>{2}</td><td>{3}</td><td>{4}</td>"
@@ -492,8 +505,7 @@ void write_explore_report(const ExploreResult& result, const fs::path& dir,
       for (const auto& e : options.atlas->best) {
         const fs::path certificate = from / "exact" / (e.label + ".gp");
         if (fs::exists(certificate))
-          fs::copy_file(certificate, dir / "atlas" / "exact" / certificate.filename(),
-                        fs::copy_options::overwrite_existing);
+          link_or_copy(certificate, dir / "atlas" / "exact" / certificate.filename());
       }
     }
     if (options.diagrams)

@@ -255,6 +255,7 @@ void render_json(std::ostream& out, const FileAnalysis& f, const RenderOptions& 
   json j;
   j["file"] = f.file;
   j["layout"] = f.layout;
+  if (!f.label.empty()) j["label"] = f.label;
   j["n"] = n;
   const int digits = std::max(f.digits, 17);
   j["d"] = f.d_string(digits);

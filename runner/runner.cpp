@@ -37,6 +37,8 @@ void Dispenser::work() {
     std::string result;
     try {
       result = items_.run(*index);
+    } catch (const Abandoned&) {
+      continue;  // the token was abandoned: the item did not finish, and take() hands out no more
     } catch (...) {
       fail(std::current_exception());
       return;

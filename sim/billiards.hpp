@@ -46,6 +46,8 @@ struct BilliardsOptions {
   // Stage "billiards": events, elapsed (wall seconds), d (of the current diameter), relative_gap.
   ProgressFn progress;
   double progress_seconds = 0.5;
+  // Set: the run throws Abandoned once the token is abandoned (checked every 4096 events).
+  const CancelToken* cancel = nullptr;
 };
 
 struct BilliardsResult {

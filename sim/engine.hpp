@@ -118,6 +118,7 @@ class Engine {
         break;
       }
       if ((r.events & 4095) == 0) {
+        throw_if_abandoned(opt_.cancel);
         const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         if (elapsed > stop_.max_seconds) {
           stop("max seconds", false);

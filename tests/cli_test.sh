@@ -447,5 +447,33 @@ if command -v script >/dev/null; then
     pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: progress line on a terminal"; fi
 fi
 
+# A file whose header states n but holds another number of points (a truncated t22a.txt) is
+# refused by analyze and by db import, and nothing is stored; a header d the points contradict
+# is a warning for analyze and a refusal for import unless asked.
+ttmp=$(mktemp -d)
+atlas22="$(dirname "$0")/../data/atlas/t22a.txt"
+head -n 25 "$atlas22" >"$ttmp/t22a.txt"  # the header and the first 12 points
+expect_error "analyze refuses a truncated file" "n = 22 but the file holds 12 points" \
+  analyze "$ttmp/t22a.txt"
+expect_error "db import refuses a truncated file" "n = 22 but the file holds 12 points" \
+  db import "$ttmp/t22a.txt" --db "$ttmp/runs.db"
+if [ ! -e "$ttmp/runs.db" ]; then pass=$((pass + 1)); else
+  fail=$((fail + 1)); echo "FAIL: a refused import created the database"; fi
+sed 's/^# d: .*/# d: 0.1793/' "$atlas22" >"$ttmp/d22.txt"
+if "$TRIPACK" analyze "$ttmp/d22.txt" >/dev/null 2>"$ttmp/warn.txt" &&
+  grep -q "warning: the header's d" "$ttmp/warn.txt"; then pass=$((pass + 1)); else
+  fail=$((fail + 1)); echo "FAIL: analyze warns of a header d the points contradict"; fi
+expect_error "db import refuses a header d the points contradict" "differs from the points' d" \
+  db import "$ttmp/d22.txt" --db "$ttmp/runs.db"
+if "$TRIPACK" db import "$ttmp/d22.txt" --accept-header-d --db "$ttmp/runs.db" >/dev/null 2>&1; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: import --accept-header-d stores it"; fi
+# The label read is the label written by analyze -o, in every format that carries one.
+for ext in txt json xyz pck; do
+  "$TRIPACK" analyze "$atlas22" -o "$ttmp/out.$ext" >/dev/null 2>&1
+  if grep -qE '(label: t22a|"label": ?"t22a"|label=t22a|label="t22a")' "$ttmp/out.$ext"; then
+    pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: analyze -o out.$ext keeps the label t22a"; fi
+done
+rm -rf "$ttmp"
+
 echo "cli: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

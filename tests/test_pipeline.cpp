@@ -250,7 +250,7 @@ TEST(Pipeline, ConventionsMapBackToTheUnitTriangle) {
   for (const auto& p : built.packing.points)
     circles.push_back(Vec2L{kSqrt3 * r, r} + p * (1 - 2 * kSqrt3 * r));
   const Packing back =
-      packing_from_points({circles, {}, {}, "x y", {}}, Convention::Radius, 22).packing;
+      packing_from_points({circles, {}, {}, "x y", {}, {}, {}}, Convention::Radius, 22).packing;
   EXPECT_NEAR(back.d, d, 1e-17L);
   for (std::size_t i = 0; i < circles.size(); ++i)
     EXPECT_NEAR(norm(back.points[i] - built.packing.points[i]), 0, 1e-17L);
@@ -258,7 +258,7 @@ TEST(Pipeline, ConventionsMapBackToTheUnitTriangle) {
   std::vector<Vec2L> unit;
   for (const auto& p : built.packing.points) unit.push_back(Vec2L{kSqrt3, 1} + p / d);
   const Packing back2 =
-      packing_from_points({unit, {}, {}, "x y", {}}, Convention::UnitDiskSide, std::nullopt)
+      packing_from_points({unit, {}, {}, "x y", {}, {}, {}}, Convention::UnitDiskSide, std::nullopt)
           .packing;
   EXPECT_NEAR(back2.d, d, 1e-17L);
   EXPECT_NEAR(side_from_d(back2.d), 2 / d + 2 * kSqrt3, 1e-14L);
@@ -267,7 +267,7 @@ TEST(Pipeline, ConventionsMapBackToTheUnitTriangle) {
 TEST(Pipeline, BadPointSetsAreRejectedWithOneLine) {
   auto rejects = [](std::vector<Vec2L> pts, std::optional<long long> n, const std::string& needle) {
     try {
-      packing_from_points({std::move(pts), {}, {}, "x y", {}}, Convention::UnitTriangle, n);
+      packing_from_points({std::move(pts), {}, {}, "x y", {}, {}, {}}, Convention::UnitTriangle, n);
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
       return;

@@ -163,7 +163,7 @@ TEST(Points, BadPointSetsAreRejectedWithOneLine) {
                   {"radius", "not unit-triangle"});
   expect_rejected(file("t22a.xyr.txt"), Convention::UnitDiskSide, 22, {"not unit-disk-side"});
   expect_rejected(file("t22a.xy.txt"), {}, 23, {"expected 23 points, the file has 22"});
-  expect_rejected(PointsFile{{{0.1L, 0.1L}}, {}, {}, "x y", {}}, {}, {}, {"at least 2"});
+  expect_rejected(PointsFile{{{0.1L, 0.1L}}, {}, {}, "x y", {}, {}, {}}, {}, {}, {"at least 2"});
 }
 
 }  // namespace

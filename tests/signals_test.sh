@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Ctrl-C and SIGTERM as GNU timeout sends them (to the process and to its group, so one request
+# arrives twice): every long job counts the pair as one request, stops, and still prints and
+# records what finished (docs/cli.md, "Ctrl-C"). A second request a few seconds later abandons
+# the items under way, and the result of what finished is still printed.
+# Usage: signals_test.sh path/to/tripack
+set -u
+TRIPACK=$1
+source "$(dirname "${BASH_SOURCE[0]}")/check.sh"
+PY=/usr/bin/python3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# A JSON result on stdout that holds at least one packing.
+json_has_packing() {
+  "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j.get("packings") else 1)' "$1"
+}
+
+# search: 10 tries under SIGINT, 2 under SIGTERM.
+ok=0
+for try in $(seq 1 10); do
+  timeout --preserve-status -s INT 3 "$TRIPACK" search 150 --seconds 60 --json \
+    >"$tmp/s.json" 2>"$tmp/s.err"
+  rc=$?
+  [ "$rc" -eq 130 ] && json_has_packing "$tmp/s.json" && ok=$((ok + 1))
+done
+check "search 150 under timeout -s INT 3: a result in $ok of 10 tries" [ "$ok" -eq 10 ]
+check "the stop message is one line, not 'at once'" \
+  bash -c "[ \$(grep -c '^tripack: stopping' '$tmp/s.err') -eq 1 ] && ! grep -q 'at once:' '$tmp/s.err'"
+check "stderr does not start with an empty line" [ -n "$(head -c1 "$tmp/s.err" | tr -d '\n')" ]
+ok=0
+for try in 1 2; do
+  timeout --preserve-status 3 "$TRIPACK" search 150 --seconds 60 --json >"$tmp/s.json" 2>/dev/null
+  rc=$?
+  [ "$rc" -eq 130 ] && json_has_packing "$tmp/s.json" && ok=$((ok + 1))
+done
+check "search 150 under timeout (SIGTERM) 3: a result in $ok of 2 tries" [ "$ok" -eq 2 ]
+
+# search --db: the chains that finished are recorded.
+timeout --preserve-status -s INT 3 "$TRIPACK" search 60 --seconds 60 --db "$tmp/search.db" \
+  --json >"$tmp/d.json" 2>/dev/null
+rc=$?
+chains=$(sqlite3 "$tmp/search.db" 'select count(*) from runs' 2>/dev/null || echo 0)
+check "search --db under timeout -s INT: rc 130 ($rc), a result, $chains chains recorded" \
+  bash -c "[ $rc -eq 130 ] && [ ${chains:-0} -gt 0 ] && '$PY' -c 'import json; json.load(open(\"$tmp/d.json\"))'"
+
+# campaign: every finished unit recorded, the result printed; the same command continues.
+ok=0
+for try in 1 2 3; do
+  rm -f "$tmp/c.db"*
+  timeout --preserve-status -s INT 3 "$TRIPACK" campaign --n 40..60 --runs 20 --threads 2 \
+    --db "$tmp/c.db" --json >"$tmp/c.json" 2>"$tmp/c.err"
+  rc=$?
+  units=$(sqlite3 "$tmp/c.db" 'select count(*) from runs' 2>/dev/null || echo 0)
+  if [ "$rc" -eq 130 ] && [ "${units:-0}" -gt 0 ] &&
+    "$PY" -c 'import json,sys; json.load(open(sys.argv[1]))' "$tmp/c.json"; then
+    ok=$((ok + 1))
+  fi
+done
+check "campaign under timeout -s INT 3: result printed and units recorded in $ok of 3 tries" [ "$ok" -eq 3 ]
+
+# Two requests 1.5 s apart: the second abandons the billiards runs under way; the runs that
+# finished are still printed, and the program ends promptly.
+"$TRIPACK" billiards 1500 --runs 4 --threads 2 --json >"$tmp/b.json" 2>"$tmp/b.err" &
+pid=$!
+sleep 3
+kill -INT "$pid"
+sleep 1.5
+kill -INT "$pid"
+start=$(date +%s)
+wait "$pid"
+rc=$?
+took=$(($(date +%s) - start))
+check "billiards: a second Ctrl-C stops at once (rc=$rc, ${took} s after it)" \
+  bash -c "[ $rc -eq 130 ] && [ $took -le 5 ]"
+check "billiards: the second Ctrl-C says it abandons the runs under way" grep -q 'at once:' "$tmp/b.err"
+check "billiards: the result after two Ctrl-C is JSON" \
+  "$PY" -c 'import json,sys; json.load(open(sys.argv[1]))' "$tmp/b.json"
+
+echo "signals: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
