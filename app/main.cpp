@@ -12,6 +12,7 @@
 
 #include "commands/command.hpp"
 #include "commands/help.hpp"
+#include "core/option_values.hpp"
 
 namespace {
 
@@ -25,8 +26,21 @@ class CliOptions : public OptionList {
 
    public:
     explicit CliHandle(CLI::Option* option) : option_(option) {}
+    // CLI11's Range prints its bounds with std::to_string ("2.000000 to 100000.000000"): the
+    // same check with the bounds as option_range writes them ("2 to 100000", "0.001 to ...").
     Handle& range(double min, double max) override {
-      option_->check(CLI::Range(min, max));
+      const std::string bounds = option_range(min, max);
+      option_->check(CLI::Validator(
+          [min, max, bounds](std::string& input) {
+            double value = 0;
+            if (!CLI::detail::lexical_cast(input, value)) return "'" + input + "' is not a number";
+            if (!(value >= min && value <= max))
+              return "Value " + input + " not in range " + bounds;
+            return std::string();
+          },
+          ""));
+      option_->type_name(option_->get_type_name() + " in [" + option_bound(min) + " - " +
+                         option_bound(max) + "]");
       return *this;
     }
     Handle& required() override {

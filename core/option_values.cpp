@@ -1,5 +1,7 @@
 #include "core/option_values.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -57,6 +59,17 @@ long double positive_decimal(const std::string& text, const std::string& option)
   if (!v || !(*v > 0) || !std::isfinite(*v))
     throw std::invalid_argument(option + " must be a positive decimal number, not '" + text + "'");
   return *v;
+}
+
+std::string option_bound(double value) {
+  // Whole numbers below 2^53 are exact doubles: printed as integers, never "2.000000" or "1e+07".
+  if (std::isfinite(value) && value == std::trunc(value) && std::fabs(value) < 0x1p53)
+    return fmt::format("{}", static_cast<long long>(value));
+  return fmt::format("{}", value);
+}
+
+std::string option_range(double min, double max) {
+  return option_bound(min) + " to " + option_bound(max);
 }
 
 }  // namespace tripack

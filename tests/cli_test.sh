@@ -436,6 +436,15 @@ rm -f "$sdb" "$sdb-wal" "$sdb-shm" "$sdb.err"
 expect_error "search with an unknown method" "--method must be one of basin-hopping, restarts" search 12 --method anneal
 expect_error "search with a bad target" "--target must be a positive decimal" search 12 --target 0.2x
 expect_error "search of one disk" "N: Value 1 not in range" search 1
+# Range errors and the help show an option's bounds as numbers are written: 2 to 100000, 0.001
+# (CLI11's Range printed 2.000000 to 100000.000000).
+expect_error "an integer option's range in integers" "max-n: Value 1 not in range 2 to 100000$" \
+  explore --max-n 1
+expect_error "a real option's range in shortest form" \
+  "seconds: Value 0 not in range 0.001 to 10000000$" search 10 --seconds 0
+expect_error "a range check of a word" "'abc' is not a number" explore --max-n abc
+if "$TRIPACK" explore --help | grep -q -- '--max-n INT in \[2 - 100000\]'; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: help shows --max-n INT in [2 - 100000]"; fi
 
 # Progress: on a terminal (script(1) gives the command a pty), a stage running over 2 s
 # shows a live line with the stage; a quick command shows none.
