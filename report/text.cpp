@@ -2,8 +2,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
@@ -19,6 +24,43 @@ namespace {
 
 void line(std::ostream& out, std::string_view key, const std::string& value) {
   out << fmt::format("{:<10} {}\n", key, value);
+}
+
+// Rows of cells as columns, each column as wide as its widest cell (in characters, UTF-8
+// aware), two spaces between columns, every line starting with `indent`: a long label or a d
+// with more digits widens its column instead of shifting the rest of its row.
+void aligned_rows(std::ostream& out, std::string_view indent,
+                  const std::vector<std::vector<std::string>>& rows) {
+  const auto width = [](const std::string& s) {
+    return static_cast<std::size_t>(
+        std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  };
+  std::vector<std::size_t> widths;
+  for (const auto& row : rows)
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (widths.size() <= c) widths.push_back(0);
+      widths[c] = std::max(widths[c], width(row[c]));
+    }
+  for (const auto& row : rows) {
+    std::string text(indent);
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      text += row[c];
+      if (c + 1 < row.size()) text += std::string(widths[c] - width(row[c]) + 2, ' ');
+    }
+    out << text << "\n";
+  }
+}
+
+// The table of distinct packings of billiards and search: label, d, bonds, rattlers, verdict and
+// `found` (where each was found), aligned.
+void packing_rows(std::ostream& out, const std::vector<PackingRecord>& packings,
+                  const std::function<std::string(const PackingRecord&)>& found) {
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& x : packings)
+    rows.push_back({x.label, "d = " + x.d.str(15), fmt::format("bonds {}", x.bonds()),
+                    fmt::format("rattlers {}", x.rattlers()),
+                    x.certified ? "certified" : "NOT certified", found(x)});
+  aligned_rows(out, "  ", rows);
 }
 
 std::string count_vs(std::size_t got, const std::optional<long long>& expected) {
@@ -202,11 +244,9 @@ void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
                        r.runs_asked, r.seconds);
   else
     out << fmt::format("distinct packings ({} runs, {:.2f} s):\n", ran, r.seconds);
-  for (const auto& x : r.packings)
-    out << fmt::format(
-        "  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} runs, first seed {})\n", x.label,
-        x.d.str(15), x.bonds(), x.rattlers(), x.certified ? "certified" : "NOT certified", x.runs(),
-        ran, x.first_seed());
+  packing_rows(out, r.packings, [&](const PackingRecord& x) {
+    return fmt::format("({} of {} runs, first seed {})", x.runs(), ran, x.first_seed());
+  });
 }
 
 }  // namespace
@@ -334,10 +374,9 @@ void render_text(std::ostream& out, const SearchResult& r, const RenderOptions&)
                          c.seed, c.base_steps, c.steps, c.base_n,
                          c.base_best_d.empty() ? "none" : c.base_best_d);
   out << fmt::format("distinct packings ({}):\n", r.packings.size());
-  for (const auto& x : r.packings)
-    out << fmt::format("  {:<10} d = {}  bonds {}  rattlers {}  {}  ({} of {} chains)\n", x.label,
-                       x.d.str(15), x.bonds(), x.rattlers(),
-                       x.certified ? "certified" : "NOT certified", x.runs(), r.chains.size());
+  packing_rows(out, r.packings, [&](const PackingRecord& x) {
+    return fmt::format("({} of {} chains)", x.runs(), r.chains.size());
+  });
 }
 
 void render_text(std::ostream& out, const ConstructedVsBilliards& c, const RenderOptions&) {
