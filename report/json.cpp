@@ -78,7 +78,9 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
   json j = member_json(b.pattern.provenance);
   j["n"] = n;
   j["d"] = b.digits > kLongDoubleDigits ? b.d_string(b.digits) : decimal17(pk.d);
-  j["L"] = decimal17(L);
+  // L to the digits of d (the MPFR polish's L); delta stays a number (a double's digits).
+  j["L"] = b.digits > kLongDoubleDigits && b.record.L.multiprecision() ? b.record.L.str(b.digits)
+                                                                       : decimal17(L);
   j["delta"] = static_cast<double>(oler_delta(n, L));
   add_counts(j, b.pattern);
   j["bonds_expected"] = b.bonds_expected ? json(*b.bonds_expected) : json(nullptr);

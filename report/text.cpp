@@ -8,10 +8,12 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/conventions.hpp"
 #include "core/io.hpp"
+#include "polish/polish_mp.hpp"
 #include "report/render.hpp"
 
 namespace tripack::report {
@@ -61,6 +63,21 @@ void packing_rows(std::ostream& out, const std::vector<PackingRecord>& packings,
                     fmt::format("rattlers {}", x.rattlers()),
                     x.certified ? "certified" : "NOT certified", found(x)});
   aligned_rows(out, "  ", rows);
+}
+
+// L and delta(n) = L - t(n) beside a d of `digits` significant digits. After an MPFR polish (L
+// holds its digits), L to `digits` and delta in MPFR from that L, t(n) = (-3 + sqrt(8n+1))/2
+// computed at its precision, to L's decimals: delta is known to L's absolute accuracy (so to one
+// digit fewer than L where L >= 1 > delta). Else both from long double: L to min(digits, 18),
+// delta to min(digits, 15) significant digits.
+std::pair<std::string, std::string> L_and_delta(const PreciseReal& L, long long n, int digits) {
+  if (digits > kLongDoubleDigits && L.multiprecision()) {
+    std::string text = L.str(digits);
+    std::string delta = oler_delta_from_L(text, n);
+    return {std::move(text), std::move(delta)};
+  }
+  return {format_significant(L.value(), std::min(digits, kLongDoubleDigits)),
+          format_significant(oler_delta(n, L.value()), std::min(digits, 15))};
 }
 
 std::string count_vs(std::size_t got, const std::optional<long long>& expected) {
@@ -152,14 +169,13 @@ void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
 }
 
 void build_lines(std::ostream& out, const BuildResult& b) {
-  const auto& pk = b.pattern.packing;
-  const long long n = static_cast<long long>(pk.size());
-  const long double L = 1.0L / pk.d;
+  const long long n = static_cast<long long>(b.pattern.packing.size());
+  const auto [L, delta] = L_and_delta(b.record.L, n, b.digits);
   line(out, "class", member_name(b.pattern.provenance));
   line(out, "n", std::to_string(n));
   line(out, "d", b.d_string(b.digits));
-  line(out, "L", format_significant(L, std::min(b.digits, kLongDoubleDigits)));
-  line(out, "delta(n)", format_significant(oler_delta(n, L), 15));
+  line(out, "L", L);
+  line(out, "delta(n)", delta);
   line(out, "bonds", count_vs(b.pattern.bonds.size(), b.bonds_expected));
   line(out, "rattlers", count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
   if (b.polished) {
@@ -330,8 +346,12 @@ void render_text(std::ostream& out, const FileAnalysis& f, const RenderOptions&)
        fmt::format("{} (start {})", f.d_string(f.digits), format_significant(a.relax.d_start, 15)));
   if (f.convention != Convention::UnitTriangle)
     line(out, f.convention == Convention::Radius ? "r" : "S", f.value_string(f.digits));
-  line(out, "L", f.L_string(f.digits));
-  line(out, "delta(n)", format_significant(oler_delta(n, 1 / pk.d), 15));
+  const auto& mp = a.multiprecision;
+  const auto [L, delta] = L_and_delta(
+      mp && mp->converged ? PreciseReal(1 / pk.d, mp->L, mp->digits) : PreciseReal(1 / pk.d), n,
+      f.digits);
+  line(out, "L", L);
+  line(out, "delta(n)", delta);
   line(out, "bonds", std::to_string(a.pattern.bonds.size()));
   // The first 40 rattlers by index (--json lists them all in rattler_indices).
   const auto& rattlers = a.pattern.rattlers;

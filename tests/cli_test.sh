@@ -445,6 +445,24 @@ expect_error "a real option's range in shortest form" \
 expect_error "a range check of a word" "'abc' is not a number" explore --max-n abc
 if "$TRIPACK" explore --help | grep -q -- '--max-n INT in \[2 - 100000\]'; then
   pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: help shows --max-n INT in [2 - 100000]"; fi
+# build and analyze print L and delta(n) to the --digits asked: from the MPFR polish, delta =
+# L - t(n) in MPFR to L's decimals. The values: L = 1/d and delta = L - (-3 + sqrt(177))/2 from
+# t22a's d to 60 digits (build --digits 60), in Python's decimal module at 120 digits, rounded.
+L50=5.5742320630705465582928898217985976803360110461759
+delta49=0.4221647152455111957698744147368660378637397383078
+digits_out=$("$TRIPACK" build even-ripple --k 3 --digits 50 2>&1)
+if grep -qx "L          $L50" <<<"$digits_out" && grep -qx "delta(n)   $delta49" <<<"$digits_out"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --digits 50: L, delta: $digits_out"; fi
+digits_out=$("$TRIPACK" build even-ripple --k 3 --digits 50 --json 2>&1)
+if grep -q "\"L\":\"$L50\"" <<<"$digits_out"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --digits 50 --json: L"; fi
+digits_out=$("$TRIPACK" analyze "$(dirname "$0")/../data/atlas/t22a.txt" --digits 40 2>&1)
+if grep -qx "L          ${L50:0:41}" <<<"$digits_out" &&
+  grep -qx "delta(n)   0.422164715245511195769874414736866037864" <<<"$digits_out"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: analyze --digits 40: L, delta: $digits_out"; fi
+digits_out=$("$TRIPACK" build even-ripple --k 3 --digits 5 2>&1)
+if grep -qx "L          5.5742" <<<"$digits_out" && grep -qx "delta(n)   0.42216" <<<"$digits_out"; then
+  pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --digits 5: L, delta: $digits_out"; fi
 
 # Progress: on a terminal (script(1) gives the command a pty), a stage running over 2 s
 # shows a live line with the stage; a quick command shows none.
