@@ -1,8 +1,10 @@
 // tripack: the command line. Every command comes from the command table (commands/table.cpp) and
 // declares its own options; this file binds them with CLI11, parses, and dispatches.
 #include <signal.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -109,9 +111,14 @@ int fail(const std::string& message, bool json, int code) {
 }
 
 // Ctrl-C and SIGTERM (mpirun passes a Ctrl-C on to the ranks as SIGTERM) are taken by a thread
-// of their own (sigwait), not a handler: the first sets the token, so the job starts nothing new
-// and reports what finished; the second ends the program at once. Blocked before any other
-// thread starts, so every thread inherits the mask and only this one receives them.
+// of their own (sigwait), not a handler. Blocked before any other thread starts, so every thread
+// inherits the mask and only this one receives them. Signals within kSameSignal of the last one
+// counted are that one again: GNU timeout and a terminal's Ctrl-C signal both the process and its
+// group, so one request often arrives twice. The first stops the job after the items under way;
+// the second abandons those items, and the job still reports and records what finished; only a
+// third ends the program at once (docs/cli.md, "Ctrl-C").
+constexpr std::chrono::milliseconds kSameSignal{1000};
+
 void cancel_on_signals(CancelToken& cancel) {
   sigset_t signals;
   sigemptyset(&signals);
@@ -119,11 +126,31 @@ void cancel_on_signals(CancelToken& cancel) {
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   std::thread([signals, &cancel] {
+    // A person at a terminal sees the first request acknowledged at once (the progress line
+    // ended first); a log gets only the job's one closing line ("tripack: cancelled: ...").
+    const bool terminal = isatty(STDERR_FILENO);
+    const char* fresh_line = terminal ? "\n" : "";
+    int counted = 0;
+    auto last = std::chrono::steady_clock::now();
     for (;;) {
       int received = 0;
       if (sigwait(&signals, &received) != 0) continue;
-      if (cancel.cancel_again()) std::_Exit(commands::kCancelledExit);
-      std::cerr << "\ntripack: stopping after the items under way (again to stop at once)\n";
+      const auto now = std::chrono::steady_clock::now();
+      if (counted > 0 && now - last < kSameSignal) continue;
+      last = now;
+      ++counted;
+      if (counted == 1) {
+        cancel.cancel();
+        if (terminal)
+          std::cerr << "\ntripack: stopping after the items under way (again to stop at once)\n";
+      } else if (counted == 2) {
+        cancel.abandon();
+        std::cerr << fresh_line
+                  << "tripack: stopping at once: the items under way are abandoned, what "
+                     "finished is reported (again to exit without it)\n";
+      } else {
+        std::_Exit(commands::kCancelledExit);
+      }
     }
   }).detach();
 }

@@ -33,8 +33,7 @@ void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
 
 class Build : public Command {
  public:
-  static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member",
-                                     false};
+  static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member", true};
 
  private:
   BuildRequest member{"", kUnsetK, 0, ""};
@@ -58,15 +57,21 @@ class Build : public Command {
     // Builds over 2 s show their stage (the LP-free certificate of 4Delta(224) takes 14 s).
     report::ProgressLine progress(std::cerr, terminal_line(kInfo.name, out, 2));
     settings.progress = progress.callback();
+    settings.cancel = c.cancel;
     pipeline::BestBuild result;
-    if (n) {
-      if (!member.class_id.empty() || member.k != kUnsetK || member.p)
-        throw std::invalid_argument("build --n N takes no class, --k or --p");
-      result = pipeline::build_best_for_n(catalogue, n, settings);
-    } else {
-      if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
-      if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
-      result.best = pipeline::build_and_certify(catalogue, member, settings);
+    try {
+      if (n) {
+        if (!member.class_id.empty() || member.k != kUnsetK || member.p)
+          throw std::invalid_argument("build --n N takes no class, --k or --p");
+        result = pipeline::build_best_for_n(catalogue, n, settings);
+      } else {
+        if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
+        if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
+        result.best = pipeline::build_and_certify(catalogue, member, settings);
+      }
+    } catch (const Cancelled&) {
+      progress.finish();
+      return cancelled("nothing was built");
     }
     progress.finish();
     print_result(result, out);

@@ -69,7 +69,8 @@ long BuilderCall::arg(const std::string& name) const {
   return static_cast<long>(it->second.eval<long long>(integer_env(k, p)));
 }
 
-Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req) {
+Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req,
+                      const BuildControl& control) {
   const ClassInfo& c = catalogue.find(req.class_id);
   catalogue.check_parameters(c, req.k, req.p);
   const std::string variant = catalogue.resolve_variant(c, req.k, req.variant);
@@ -80,7 +81,7 @@ Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& req) {
     throw CatalogueError(c.id + ": unknown builder '" + c.builder +
                          "' in the catalogue (known: " + known + ")");
   }
-  Pattern pat = build({c, req.k, req.p, variant});
+  Pattern pat = build({c, req.k, req.p, variant, &control});
   pat.provenance = {c.id, req.k, req.p, variant};
   return pat;
 }

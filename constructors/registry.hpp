@@ -10,6 +10,7 @@
 
 #include "constructors/catalogue.hpp"
 #include "core/packing.hpp"
+#include "core/progress.hpp"
 
 namespace tripack {
 
@@ -20,10 +21,19 @@ struct BuildRequest {
   std::string variant;  // empty: the class's default
 };
 
+// What a long construction (an enumeration of candidates) reports and how it is stopped: stage
+// "construct" with items done of total, and Cancelled thrown at its next check once the token is
+// cancelled. Both optional; a quick builder ignores them.
+struct BuildControl {
+  ProgressFn progress;
+  const CancelToken* cancel = nullptr;
+};
+
 // Throws CatalogueError for a request outside the catalogue (unknown class, k or p out of range,
 // bad variant, a builder name nothing registered) and std::runtime_error if the construction
 // itself fails.
-Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& request);
+Pattern build_pattern(const Catalogue& catalogue, const BuildRequest& request,
+                      const BuildControl& control = {});
 
 // What a builder is called with: the member (k, p), its variant (already resolved: the class's
 // default when the request named none; empty for a class without variants) and its class.
@@ -34,6 +44,7 @@ struct BuilderCall {
   // The builder argument `name` of classes.yaml (`builder: {name: chain-family, q: "p", ...}`)
   // evaluated at (k, p). Throws CatalogueError when the class does not give it.
   long arg(const std::string& name) const;
+  const BuildControl* control = nullptr;  // never null when called by build_pattern
 };
 using BuilderFunction = Pattern (*)(const BuilderCall&);
 

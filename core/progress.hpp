@@ -68,6 +68,14 @@ inline void throw_if_abandoned(const CancelToken* token) {
   if (token && token->abandoned()) throw Abandoned{};
 }
 
+// A job that is one item (a build: nothing finished to keep until it ends) stops at the first
+// request: its next check throws Cancelled, and the command reports the interruption.
+struct Cancelled {};
+
+inline void throw_if_cancelled(const CancelToken* token) {
+  if (token && token->cancelled()) throw Cancelled{};
+}
+
 inline bool cancelled(const CancelToken* token) {
   return token && token->cancelled();
 }

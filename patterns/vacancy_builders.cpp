@@ -12,9 +12,19 @@ namespace tripack::patterns {
 
 namespace {
 
+// The enumeration's settings with the call's progress and cancel token.
+SegmentSearch segment_search(const BuilderCall& c) {
+  SegmentSearch search;
+  if (c.control) {
+    search.progress = c.control->progress;
+    search.cancel = c.control->cancel;
+  }
+  return search;
+}
+
 // Delta(rows) minus the best straight segment of `vacancies` sites.
 Pattern build_vacancy_segment(const BuilderCall& c) {
-  return best_vacancy_segment(c.arg("rows"), c.arg("vacancies")).pattern;
+  return best_vacancy_segment(c.arg("rows"), c.arg("vacancies"), segment_search(c)).pattern;
 }
 
 // The Delta(2)-inflation of that packing: Delta(2 rows - 1) - (2 vacancies - 1) disks, side
@@ -25,7 +35,7 @@ Pattern build_vacancy_segment(const BuilderCall& c) {
 Pattern build_inflated_segment(const BuilderCall& c) {
   const long rows = c.arg("rows");
   const long vacancies = c.arg("vacancies");
-  const SegmentChoice base = best_vacancy_segment(rows, vacancies);
+  const SegmentChoice base = best_vacancy_segment(rows, vacancies, segment_search(c));
   // A long slip can also round some disks onto the neighbouring site, which changes the vacancy
   // set and the inflated n (k = 2, p = 20: 913 disks instead of 907); the lattice then too.
   const std::size_t expected =

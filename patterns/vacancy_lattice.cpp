@@ -1,5 +1,7 @@
 #include "patterns/vacancy_lattice.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -143,10 +145,26 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     RelaxReport relax;
   };
   std::vector<Relaxed> relaxed;
-  for (const auto& seg : straight_segments(rows, vacancies)) {
+  const auto segments = straight_segments(rows, vacancies);
+  const std::size_t top = std::min(segments.size(), std::max<std::size_t>(1, search.top_segments));
+  const long long relaxes = static_cast<long long>(segments.size() + top * search.restarts);
+  long long done = 0;
+  auto relaxed_one = [&](const char* what) {
+    throw_if_cancelled(search.cancel);
+    if (!search.progress) return;
+    Progress p;
+    p.stage = "construct";
+    p.item = fmt::format("{} of Delta({}) less {}", what, rows, vacancies);
+    p.done = ++done;
+    p.total = relaxes;
+    search.progress(p);
+  };
+  for (const auto& seg : segments) {
+    throw_if_cancelled(search.cancel);
     Packing p = lattice_with_vacancies(rows, seg);
     RelaxReport lp = relax_near_lattice(p);
     relaxed.push_back({seg, std::move(p), std::move(lp)});
+    relaxed_one("segments relaxed");
   }
   SegmentChoice best;
   best.segments = relaxed.size();
@@ -154,7 +172,6 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   std::stable_sort(relaxed.begin(), relaxed.end(), [](const Relaxed& a, const Relaxed& b) {
     return a.packing.d > b.packing.d * (1 + 1e-14L);
   });
-  const std::size_t top = std::min(relaxed.size(), std::max<std::size_t>(1, search.top_segments));
   for (std::size_t s = 0; s < top; ++s) {
     Relaxed& r = relaxed[s];
     // The exact lattice's own relax: its bonds without relaxing it again.
@@ -172,6 +189,7 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
       std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
       Pattern moved = relax_to_pattern(jittered(lattice, rows, search.jitter, rng));
       ++best.restarts;
+      relaxed_one("restarts relaxed");
       if (better_pattern(moved, best.pattern)) {
         best.pattern = std::move(moved);
         best.vacancies = r.segment;

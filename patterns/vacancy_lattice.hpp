@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/packing.hpp"
+#include "core/progress.hpp"
 
 namespace tripack::patterns {
 
@@ -51,6 +52,10 @@ struct SegmentSearch {
   std::size_t top_segments = 3;
   int restarts = 8;
   long double jitter = 1e-4L;  // in lattice spacings (see jittered() in the .cpp)
+  // Stage "construct", one report per relax (segments, then restarts); the enumeration throws
+  // Cancelled between relaxes once `cancel` is cancelled.
+  ProgressFn progress;
+  const CancelToken* cancel = nullptr;
 };
 struct SegmentChoice {
   Pattern pattern;

@@ -56,7 +56,10 @@ BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& req
                              const BuildSettings& settings) {
   BuildResult b;
   tell_stage(settings, "construct");
-  b.pattern = timed(b.times.construct, [&] { return build_pattern(catalogue, request); });
+  b.pattern = timed(b.times.construct, [&] {
+    return build_pattern(catalogue, request, {settings.progress, settings.cancel});
+  });
+  throw_if_cancelled(settings.cancel);
   if (settings.polish) {
     tell_stage(settings, "polish of the builder's bonds");
     b.polish = timed(b.polish_seconds, [&] {
@@ -82,7 +85,12 @@ void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSetting
   if (certify) {
     AnalysisOptions options;
     options.digits = settings.digits;
-    options.progress = settings.progress;
+    // The analysis reports every stage and relax step: there it also stops when cancelled.
+    if (settings.progress || settings.cancel)
+      options.progress = [&settings](const Progress& p) {
+        throw_if_cancelled(settings.cancel);
+        if (settings.progress) settings.progress(p);
+      };
     b.analysis = analyze_packing(b.pattern.packing, options);
   } else if (settings.digits > kLongDoubleDigits) {
     tell_stage(settings, "multiprecision polish");
@@ -133,6 +141,7 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
     std::stable_partition(variants.begin(), variants.end(),
                           [&](const std::string& v) { return v == first; });
     for (const auto& v : variants) {
+      throw_if_cancelled(settings.cancel);
       BuildResult b;
       try {
         b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings);
@@ -150,6 +159,7 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
   if (!best)
     throw std::runtime_error("no member of the catalogue containing n = " + std::to_string(n) +
                              " could be built");
+  throw_if_cancelled(settings.cancel);
   finish_build(catalogue, *best, settings);
   result.best = std::move(*best);
   return result;

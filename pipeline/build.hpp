@@ -21,6 +21,9 @@ struct BuildSettings {
   bool polish = true;   // Newton on the builder's bond system
   bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
   ProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
+  // Set: the build stops at its next check (between a construction's relaxes, between build
+  // --n's candidates and stages) by throwing Cancelled; nothing is built.
+  const CancelToken* cancel = nullptr;
 
   void declare(OptionList& o) {
     o.option("--digits", digits, "significant digits of d (above 18: MPFR polish)")

@@ -104,8 +104,8 @@ for try in 1 2; do
   rc=$?
   check "timeout -s INT: exit 130 (try $try, rc=$rc)" [ "$rc" -eq 130 ]
   check "timeout -s INT: the report says interrupted (try $try)" grep -q 'id="interrupted"' "$tmp/r6-$try/index.html"
-  check "timeout -s INT: one stop message, not 'at once' (try $try)" \
-    bash -c "[ \$(grep -c 'tripack: stopping' '$tmp/err6.txt') -eq 1 ] && ! grep -q 'at once:' '$tmp/err6.txt'"
+  check "timeout -s INT: one closing line, not 'at once' (try $try)" \
+    bash -c "[ \$(grep -c 'tripack: cancelled: interrupted' '$tmp/err6.txt') -eq 1 ] && ! grep -q 'at once:' '$tmp/err6.txt'"
   check "timeout -s INT: stderr does not start with an empty line (try $try)" [ -n "$(head -c1 "$tmp/err6.txt" | tr -d '\n')" ]
 done
 

@@ -25,8 +25,8 @@ for try in $(seq 1 10); do
   [ "$rc" -eq 130 ] && json_has_packing "$tmp/s.json" && ok=$((ok + 1))
 done
 check "search 150 under timeout -s INT 3: a result in $ok of 10 tries" [ "$ok" -eq 10 ]
-check "the stop message is one line, not 'at once'" \
-  bash -c "[ \$(grep -c '^tripack: stopping' '$tmp/s.err') -eq 1 ] && ! grep -q 'at once:' '$tmp/s.err'"
+check "stderr is the one line 'tripack: cancelled: ...' ($(wc -l <"$tmp/s.err") lines)" \
+  bash -c "[ \$(wc -l <'$tmp/s.err') -eq 1 ] && grep -q '^tripack: cancelled: interrupted' '$tmp/s.err'"
 check "stderr does not start with an empty line" [ -n "$(head -c1 "$tmp/s.err" | tr -d '\n')" ]
 ok=0
 for try in 1 2; do
@@ -58,6 +58,19 @@ for try in 1 2 3; do
   fi
 done
 check "campaign under timeout -s INT 3: result printed and units recorded in $ok of 3 tries" [ "$ok" -eq 3 ]
+
+# A build is one item: the first request stops it at its next check (between the relaxes of
+# its enumeration), with one line and exit 130.
+timeout --preserve-status -s INT 3 "$TRIPACK" build --n 298 >"$tmp/build.out" 2>"$tmp/build.err"
+rc=$?
+check "build --n 298 under timeout -s INT 3: rc 130 ($rc), one line" \
+  bash -c "[ $rc -eq 130 ] && [ \$(wc -l <'$tmp/build.err') -eq 1 ] && grep -q 'nothing was built' '$tmp/build.err'"
+# On a terminal (script(1) gives it a pty) a build over 2 s shows the enumeration's progress.
+if command -v script >/dev/null; then
+  script -qec "timeout --preserve-status -s INT 4 $TRIPACK build --n 298" /dev/null >"$tmp/pty.txt"
+  check "build --n 298 on a terminal shows the segments relaxed" \
+    grep -q $'\rbuild: [0-9]*/[0-9]* .*segments relaxed' "$tmp/pty.txt"
+fi
 
 # Two requests 1.5 s apart: the second abandons the billiards runs under way; the runs that
 # finished are still printed, and the program ends promptly.
