@@ -1,7 +1,7 @@
 #include "analysis/certify.hpp"
 
+#include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -212,8 +212,12 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   SpMat G(m, columns);
   G.setFromTriplets(t.begin(), t.end());
   const SpMat A = SpMat(G.transpose()) * G;
-  Eigen::SimplicialLDLT<SpMat> ldlt(A);
-  if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 0) {
+  // CHOLMOD's supernodal Cholesky (METIS ordering, BLAS): 4Delta(707), 10^6 disks, certifies in
+  // minutes, where Eigen's simplicial LDL^T grew as n^1.5 (docs/performance.md). A factorization
+  // that succeeds shows A positive definite in floating point, as the LDL^T's positive pivots did.
+  using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
+  Cholesky ldlt(A);
+  if (ldlt.info() != Eigen::Success) {
     out.declined = "G^T G is singular (a first-order motion may keep every bond)";
     return out;
   }
@@ -238,7 +242,7 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   // f > 0, exactly when such a stress exists). Each step solves with G^T F^2 G, the pattern of
   // A. The plain projection of all-ones already fails at n = 7261 (even-ripple k = 60).
   Eigen::VectorXd f = Eigen::VectorXd::Ones(m);
-  Eigen::SimplicialLDLT<SpMat> weighted;
+  Cholesky weighted;
   weighted.analyzePattern(A);
   bool feasible = false;
   for (int it = 0; it < 60; ++it) {

@@ -5,7 +5,6 @@
 // global: a job receives both.
 #pragma once
 
-#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -50,7 +49,10 @@ inline ProgressFn serialised(ProgressFn progress) {
 // Abandoned, and the job reports and records what finished before them.
 class CancelToken {
  public:
-  void cancel() { level_.store(std::max(level_.load(), 1)); }
+  void cancel() {
+    int none = 0;  // never lowers an abandon
+    level_.compare_exchange_strong(none, 1);
+  }
   void abandon() { level_.store(2); }
   bool cancelled() const { return level_.load() >= 1; }
   bool abandoned() const { return level_.load() >= 2; }

@@ -19,7 +19,7 @@ namespace tripack::pipeline {
 struct BuildSettings {
   int digits = 15;      // > kLongDoubleDigits: MPFR polish to this many digits
   bool polish = true;   // Newton on the builder's bond system
-  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (n <= kCertifyLimit)
+  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (needs the polish)
   ProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
   // Set: the build stops at its next check (between a construction's relaxes, between build
   // --n's candidates and stages) by throwing Cancelled; nothing is built.
@@ -32,11 +32,6 @@ struct BuildSettings {
     o.flag("!--no-certify", certify, "skip relax/bonds/rigidity/stress from the geometry");
   }
 };
-
-// Above this many disks certification is skipped (reported as skipped). With the fast certificate
-// (README "What certified means" step 5) 4Delta(224), n = 100,800, certifies in 14 s and 0.7 GB;
-// a member on which the fast path declines falls back to LPs that do not scale.
-inline constexpr std::size_t kCertifyLimit = 120000;
 
 // The whole pipeline on a class member: construct, polish the builder's bond system, verify
 // closed forms exactly, then certify from the geometry alone and compare with what the builder

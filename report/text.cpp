@@ -200,8 +200,7 @@ void build_lines(std::ostream& out, const BuildResult& b) {
     analysis_lines(out, *b.analysis, false);
   } else if (b.certify_skipped) {
     line(out, "certify",
-         fmt::format("skipped for n > {} (LP certification; use --no-certify to silence)",
-                     kCertifyLimit));
+         "skipped: it certifies the polished bond system, and --no-polish was given");
   }
   if (b.multiprecision)
     line(out, "mpfr",
