@@ -9,7 +9,6 @@ PKGS=(
   libboost-dev libboost-graph-dev  # contact graphs, multiprecision (header-only)
   libgmp-dev libmpfr-dev            # multiprecision backends
   libsuitesparse-dev   # SuiteSparseQR: fast rank-revealing sparse QR for the polisher; CHOLMOD
-  libopenblas0-pthread # the BLAS under CHOLMOD's supernodal Cholesky (the certificate) and SPQR
   coinor-libclp-dev    # COIN-OR CLP, the LP solver of relax, the rigidity test, the stress certificate
   libyaml-cpp-dev      # classes.yaml and scenes
   libcli11-dev         # command line
