@@ -213,8 +213,9 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   G.setFromTriplets(t.begin(), t.end());
   const SpMat A = SpMat(G.transpose()) * G;
   // CHOLMOD's supernodal Cholesky (METIS ordering, BLAS): 4Delta(707), 10^6 disks, certifies in
-  // minutes, where Eigen's simplicial LDL^T grew as n^1.5 (docs/performance.md). A factorization
-  // that succeeds shows A positive definite in floating point, as the LDL^T's positive pivots did.
+  // 7 minutes, and 4Delta(150) in 3.8 s where Eigen's simplicial LDL^T took 4.6 s
+  // (docs/performance.md). A factorization that succeeds shows A positive definite in floating
+  // point, as the LDL^T's positive pivots did.
   using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
   Cholesky ldlt(A);
   if (ldlt.info() != Eigen::Success) {
