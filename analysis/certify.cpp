@@ -217,7 +217,12 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   // (docs/performance.md). A factorization that succeeds shows A positive definite in floating
   // point, as the LDL^T's positive pivots did.
   using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
-  Cholesky ldlt(A);
+  // A matrix that is not positive definite is a verdict here (the certificate declines), not a
+  // warning for CHOLMOD to print on stderr.
+  auto quiet = [](Cholesky& c) { c.cholmod().print = 0; };
+  Cholesky ldlt;
+  quiet(ldlt);
+  ldlt.compute(A);
   if (ldlt.info() != Eigen::Success) {
     out.declined = "G^T G is singular (a first-order motion may keep every bond)";
     return out;
@@ -244,6 +249,7 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   // A. The plain projection of all-ones already fails at n = 7261 (even-ripple k = 60).
   Eigen::VectorXd f = Eigen::VectorXd::Ones(m);
   Cholesky weighted;
+  quiet(weighted);
   weighted.analyzePattern(A);
   bool feasible = false;
   for (int it = 0; it < 60; ++it) {
