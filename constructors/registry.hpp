@@ -27,6 +27,9 @@ struct BuildRequest {
 struct BuildControl {
   ProgressFn progress;
   const CancelToken* cancel = nullptr;
+  // An enumerating builder relaxes every candidate fully instead of its fast ranking (the check
+  // of that ranking: docs/classes.md, "Vacancy segments").
+  bool exhaustive = false;
 };
 
 // Throws CatalogueError for a request outside the catalogue (unknown class, k or p out of range,

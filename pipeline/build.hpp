@@ -24,12 +24,16 @@ struct BuildSettings {
   // Set: the build stops at its next check (between a construction's relaxes, between build
   // --n's candidates and stages) by throwing Cancelled; nothing is built.
   const CancelToken* cancel = nullptr;
+  bool exhaustive = false;  // enumerating builders relax every candidate (BuildControl)
 
   void declare(OptionList& o) {
     o.option("--digits", digits, "significant digits of d (above 18: MPFR polish)")
         .range(1, 100000);
     o.flag("!--no-polish", polish, "skip the Newton polish of the bond system");
     o.flag("!--no-certify", certify, "skip relax/bonds/rigidity/stress from the geometry");
+    o.flag("--exhaustive", exhaustive,
+           "relax every candidate of an enumerating class (vacancy segments) fully, not only "
+           "those its fast ranking keeps");
   }
 };
 
