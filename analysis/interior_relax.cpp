@@ -82,10 +82,41 @@ struct NewtonStep {
 // (disks with no near term would make it singular; 1e-12 slowed the sliding of nearly floppy
 // rows: 527 instead of 112 Newton steps for a billiards end state at n = 1000). The D row and
 // column are dense, so they are eliminated through a Schur complement: two solves with one
-// factorization (CHOLMOD's supernodal Cholesky: 2.4 s per step at n = 100,577 against 3.2 s
-// for Eigen's simplicial LDL^T). The fill-reducing ordering is computed again only when the
-// terms changed since the last step (`same_terms`).
-using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
+// factorization. Which one depends on n (per Newton step, 2026-11-28, one thread): Eigen's
+// simplicial LL^T is faster up to tens of thousands of disks (n = 1000: 2.3 against 5.0 ms;
+// n = 5048: 30 against 64 ms; n = 20,098: 257 against 411 ms), CHOLMOD's supernodal LL^T above
+// (n = 80,198: 2.7 against 3.1 s; n = 100,577: 2.4 against 3.2 s for Eigen's LDL^T). The
+// fill-reducing ordering is computed again only when the terms changed since the last step
+// (`same_terms`).
+constexpr Eigen::Index kSupernodalFrom = 2 * 50000;  // unknowns
+class Cholesky {
+ public:
+  explicit Cholesky(Eigen::Index unknowns) : supernodal_(unknowns >= kSupernodalFrom) {}
+  void analyzePattern(const SpMat& K) {
+    if (supernodal_)
+      supernodal_llt_.analyzePattern(K);
+    else
+      simplicial_llt_.analyzePattern(K);
+  }
+  void factorize(const SpMat& K) {
+    if (supernodal_)
+      supernodal_llt_.factorize(K);
+    else
+      simplicial_llt_.factorize(K);
+  }
+  Eigen::ComputationInfo info() const {
+    return supernodal_ ? supernodal_llt_.info() : simplicial_llt_.info();
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
+    if (supernodal_) return supernodal_llt_.solve(b);
+    return simplicial_llt_.solve(b);
+  }
+
+ private:
+  bool supernodal_;
+  Eigen::CholmodSupernodalLLT<SpMat> supernodal_llt_;
+  Eigen::SimplicialLLT<SpMat> simplicial_llt_;
+};
 NewtonStep newton_step(const std::vector<Term>& terms, bool same_terms, const State& s,
                        long double t, long double L, Cholesky& cholesky) {
   const auto n = static_cast<Eigen::Index>(s.x.size());
@@ -209,7 +240,7 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
   long double t = 0;
   for (const auto& term : near_terms(s, L))
     if (!term.wall()) t += 1 / slack(term, s, L);
-  Cholesky cholesky;
+  Cholesky cholesky(2 * static_cast<Eigen::Index>(n));
   std::vector<Term> last_terms;
   for (; rep.newton_steps < opt.max_newton_steps; t *= opt.t_factor) {
     ++rep.stages;

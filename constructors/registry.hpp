@@ -30,6 +30,7 @@ struct BuildControl {
   // An enumerating builder relaxes every candidate fully instead of its fast ranking (the check
   // of that ranking: docs/classes.md, "Vacancy segments").
   bool exhaustive = false;
+  int threads = 1;  // an enumeration's candidates relaxed at once
 };
 
 // Throws CatalogueError for a request outside the catalogue (unknown class, k or p out of range,

@@ -18,6 +18,8 @@ SegmentSearch segment_search(const BuilderCall& c) {
   if (c.control) {
     search.progress = c.control->progress;
     search.cancel = c.control->cancel;
+    search.exhaustive = c.control->exhaustive;
+    search.threads = c.control->threads;
   }
   return search;
 }

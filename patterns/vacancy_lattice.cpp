@@ -4,12 +4,16 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <exception>
+#include <mutex>
 #include <random>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "analysis/bonds.hpp"
 #include "analysis/interior_relax.hpp"
@@ -134,24 +138,90 @@ bool better_pattern(const Pattern& a, const Pattern& b) {
 
 }  // namespace
 
+namespace {
+
+// Runs work(i) for every i < count on `threads` threads (the calling one included). The first
+// exception (Cancelled) stops the hand-out and is rethrown once every thread has returned.
+template <class Work>
+void for_each_index(std::size_t count, int threads, const Work& work) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_lock;
+  auto run = [&] {
+    for (std::size_t i; (i = next++) < count;) {
+      try {
+        work(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> hold(error_lock);
+        if (!error) error = std::current_exception();
+        next = count;
+      }
+    }
+  };
+  const std::size_t helpers = std::min<std::size_t>(
+      count > 0 ? count - 1 : 0, static_cast<std::size_t>(std::max(1, threads) - 1));
+  std::vector<std::thread> pool;
+  for (std::size_t t = 0; t < helpers; ++t) pool.emplace_back(run);
+  run();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+// The fast ranking's relax: the interior-point relax alone, called again while it ends short in
+// its first stage and still raised d there. That is a long segment's start: its disks travel
+// several spacings at <= 0.1 diameter per Newton step, more than one stage's 80 steps allow
+// (n = 600: converged after 141-270 steps). A relax that ends short in a later stage is at the
+// last 1e-12 of a slip, where the LP relax finishes faster (n = 208: 4 LP steps against 700
+// more Newton steps that did not converge).
+void relax_interior(Packing& p) {
+  InteriorRelaxReport report = interior_relax(p);
+  for (int again = 0; again < 3 && !report.converged && report.stages == 1 &&
+                      report.d_end > report.d_start * (1 + 1e-15L);
+       ++again)
+    report = interior_relax(p);
+}
+
+// The LP relax from the interior relax's end (1 to 4 LP steps there) and the bonds.
+constexpr std::size_t kFastLpRelaxLimit = 5000;
+Pattern finish_relaxed(Packing p) {
+  RelaxReport lp;
+  if (p.size() < kFastLpRelaxLimit)
+    lp = relax_packing(p);
+  else
+    relax_interior(p);
+  BondIdentification id = identify_bonds(p, lp.active);
+  Pattern out;
+  out.packing = std::move(p);
+  out.bonds = std::move(id.bonds);
+  out.rattlers = std::move(id.rattlers);
+  return out;
+}
+
+// The lattice with `segment` empty, relaxed from the exact lattice or (seed > 0) from a
+// jittered copy, by the chosen ranking.
+struct SegmentRelax {
+  Packing packing;
+  RelaxReport lp;  // the exhaustive relax's LP (its loaded contacts); empty in the fast ranking
+};
+
+}  // namespace
+
 SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search) {
   if (vacancies < 1 || vacancies >= rows)
     throw std::invalid_argument("a vacancy segment of " + std::to_string(vacancies) +
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
                                 " rows with a disk left on it");
-  struct Relaxed {
-    std::vector<Site> segment;
-    Packing packing;
-    RelaxReport relax;
-  };
-  std::vector<Relaxed> relaxed;
   const auto segments = straight_segments(rows, vacancies);
   const std::size_t top = std::min(segments.size(), std::max<std::size_t>(1, search.top_segments));
+  const std::size_t finalists =
+      search.exhaustive ? top : std::min(segments.size(), std::max(top, search.lp_finalists));
   const long long relaxes = static_cast<long long>(segments.size() + top * search.restarts);
   long long done = 0;
+  std::mutex progress_lock;
   auto relaxed_one = [&](const char* what) {
     throw_if_cancelled(search.cancel);
     if (!search.progress) return;
+    const std::lock_guard<std::mutex> hold(progress_lock);
     Progress p;
     p.stage = "construct";
     p.item = fmt::format("{} of Delta({}) less {}", what, rows, vacancies);
@@ -159,40 +229,73 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     p.total = relaxes;
     search.progress(p);
   };
-  for (const auto& seg : segments) {
+  // Every segment from its exact lattice.
+  std::vector<SegmentRelax> relaxed(segments.size());
+  for_each_index(segments.size(), search.threads, [&](std::size_t s) {
     throw_if_cancelled(search.cancel);
-    Packing p = lattice_with_vacancies(rows, seg);
-    RelaxReport lp = relax_near_lattice(p);
-    relaxed.push_back({seg, std::move(p), std::move(lp)});
+    Packing p = lattice_with_vacancies(rows, segments[s]);
+    if (search.exhaustive)
+      relaxed[s].lp = relax_near_lattice(p);
+    else
+      relax_interior(p);
+    relaxed[s].packing = std::move(p);
     relaxed_one("segments relaxed");
-  }
-  SegmentChoice best;
-  best.segments = relaxed.size();
-  // The densest segments first (stable: ties keep straight_segments' order).
-  std::stable_sort(relaxed.begin(), relaxed.end(), [](const Relaxed& a, const Relaxed& b) {
-    return a.packing.d > b.packing.d * (1 + 1e-14L);
   });
+  // The densest first (stable: ties keep straight_segments' order).
+  std::vector<std::size_t> order(segments.size());
+  for (std::size_t s = 0; s < order.size(); ++s) order[s] = s;
+  auto denser = [&](std::size_t a, std::size_t b) {
+    return relaxed[a].packing.d > relaxed[b].packing.d * (1 + 1e-14L);
+  };
+  std::stable_sort(order.begin(), order.end(), denser);
+  // The finalists' bonds (the fast ranking: after the LP relax, then ranked again).
+  std::vector<Pattern> patterns(segments.size());
+  for_each_index(finalists, search.threads, [&](std::size_t f) {
+    throw_if_cancelled(search.cancel);
+    SegmentRelax& r = relaxed[order[f]];
+    if (search.exhaustive) {
+      BondIdentification id = identify_bonds(r.packing, r.lp.active);
+      patterns[order[f]] = {r.packing, std::move(id.bonds), std::move(id.rattlers), {}, {}};
+    } else {
+      patterns[order[f]] = finish_relaxed(r.packing);
+      r.packing = patterns[order[f]].packing;
+    }
+  });
+  std::stable_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(finalists), denser);
+  // The top segments from jittered copies of their lattice (seeds 1, 2, ...).
+  const std::size_t jobs = top * static_cast<std::size_t>(std::max(0, search.restarts));
+  std::vector<Pattern> restarted(jobs);
+  for_each_index(jobs, search.threads, [&](std::size_t job) {
+    throw_if_cancelled(search.cancel);
+    const std::size_t s = job / static_cast<std::size_t>(search.restarts);
+    const int restart = static_cast<int>(job % static_cast<std::size_t>(search.restarts)) + 1;
+    std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
+    Packing start =
+        jittered(lattice_with_vacancies(rows, segments[order[s]]), rows, search.jitter, rng);
+    if (search.exhaustive) {
+      restarted[job] = relax_to_pattern(start);
+    } else {
+      relax_interior(start);
+      restarted[job] = finish_relaxed(std::move(start));
+    }
+    relaxed_one("restarts relaxed");
+  });
+  // The winner, scanned in a fixed order: each top segment, then its restarts.
+  SegmentChoice best;
+  best.segments = segments.size();
+  best.restarts = jobs;
   for (std::size_t s = 0; s < top; ++s) {
-    Relaxed& r = relaxed[s];
-    // The exact lattice's own relax: its bonds without relaxing it again.
-    Pattern candidate;
-    BondIdentification id = identify_bonds(r.packing, r.relax.active);
-    candidate.packing = std::move(r.packing);
-    candidate.bonds = std::move(id.bonds);
-    candidate.rattlers = std::move(id.rattlers);
+    Pattern& candidate = patterns[order[s]];
     if (s == 0 || better_pattern(candidate, best.pattern)) {
       best.pattern = std::move(candidate);
-      best.vacancies = r.segment;
+      best.vacancies = segments[order[s]];
     }
-    const Packing lattice = lattice_with_vacancies(rows, r.segment);
     for (int restart = 1; restart <= search.restarts; ++restart) {
-      std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
-      Pattern moved = relax_to_pattern(jittered(lattice, rows, search.jitter, rng));
-      ++best.restarts;
-      relaxed_one("restarts relaxed");
+      Pattern& moved = restarted[s * static_cast<std::size_t>(search.restarts) +
+                                 static_cast<std::size_t>(restart - 1)];
       if (better_pattern(moved, best.pattern)) {
         best.pattern = std::move(moved);
-        best.vacancies = r.segment;
+        best.vacancies = segments[order[s]];
       }
     }
   }

@@ -48,10 +48,22 @@ Pattern relax_to_pattern(const Packing& start);
 // jittered copies of their lattice (seeds 1, 2, ...), and the densest result wins; equal d
 // (1e-15 relative) goes to more bonds, as the atlas ranks ties. A bounded enumeration:
 // segments + top_segments * restarts relaxes, deterministic.
+//
+// The fast ranking (the default) relaxes every candidate by the interior-point relax alone,
+// continued while its first stage ends short and still gains (a long segment's disks travel
+// several spacings), and runs the LP relax, whose CLP simplex is the slow part from a start far
+// from the maximum (1.3-4.8 s per segment at n = 600 against 0.1-0.3 s from the interior relax's
+// end), only on the `lp_finalists` densest segments and on the restarts that reach the best d.
+// `exhaustive` relaxes every candidate by interior + LP as it stands (the check of the fast
+// ranking: docs/performance.md, "build --n"). Both use `threads` threads; the result does not
+// depend on their number.
 struct SegmentSearch {
   std::size_t top_segments = 3;
   int restarts = 8;
-  long double jitter = 1e-4L;  // in lattice spacings (see jittered() in the .cpp)
+  long double jitter = 1e-4L;    // in lattice spacings (see jittered() in the .cpp)
+  std::size_t lp_finalists = 8;  // fast ranking: segments ranked again after the LP relax
+  bool exhaustive = false;
+  int threads = 1;
   // Stage "construct", one report per relax (segments, then restarts); the enumeration throws
   // Cancelled between relaxes once `cancel` is cancelled.
   ProgressFn progress;

@@ -57,7 +57,9 @@ BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& req
   BuildResult b;
   tell_stage(settings, "construct");
   b.pattern = timed(b.times.construct, [&] {
-    return build_pattern(catalogue, request, {settings.progress, settings.cancel, settings.exhaustive});
+    return build_pattern(
+        catalogue, request,
+        {settings.progress, settings.cancel, settings.exhaustive, settings.threads});
   });
   throw_if_cancelled(settings.cancel);
   if (settings.polish) {

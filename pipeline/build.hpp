@@ -25,6 +25,7 @@ struct BuildSettings {
   // --n's candidates and stages) by throwing Cancelled; nothing is built.
   const CancelToken* cancel = nullptr;
   bool exhaustive = false;  // enumerating builders relax every candidate (BuildControl)
+  int threads = 2;          // an enumeration's candidates relaxed at once (BuildControl)
 
   void declare(OptionList& o) {
     o.option("--digits", digits, "significant digits of d (above 18: MPFR polish)")
@@ -34,6 +35,8 @@ struct BuildSettings {
     o.flag("--exhaustive", exhaustive,
            "relax every candidate of an enumerating class (vacancy segments) fully, not only "
            "those its fast ranking keeps");
+    o.option("--threads", threads, "candidates of an enumerating class relaxed at once")
+        .range(1, 256);
   }
 };
 

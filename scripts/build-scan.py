@@ -6,7 +6,8 @@ its build ends, so an interrupted scan loses at most the builds under way; rerun
 A build over --limit seconds is stopped (SIGINT) and recorded as such.
 Prints the count of certified rows and the median and largest seconds at the end.
 usage: python3 scripts/build-scan.py [--tripack build/tripack] [--n 2..1000] [--jobs 1]
-                                     [--limit 600] [--out data/build-scan.csv]"""
+                                     [--limit 600] [--out data/build-scan.csv]
+                                     [--extra '--exhaustive']"""
 import argparse, csv, json, os, statistics, subprocess, sys, time
 from concurrent.futures import ThreadPoolExecutor
 
@@ -16,6 +17,7 @@ ap.add_argument("--n", default="2..1000")
 ap.add_argument("--jobs", type=int, default=1, help="builds at once (1: timings undisturbed)")
 ap.add_argument("--limit", type=float, default=600, help="seconds before a build is stopped")
 ap.add_argument("--out", default="data/build-scan.csv")
+ap.add_argument("--extra", default="", help="more build options, e.g. '--exhaustive'")
 a = ap.parse_args()
 lo, hi = (int(x) for x in a.n.split(".."))
 FIELDS = ["n", "class", "k", "p", "variant", "d", "bonds", "rattlers", "certified", "seconds",
@@ -36,7 +38,7 @@ if new_file:
 def build(n):
     start = time.monotonic()
     try:
-        p = subprocess.run([a.tripack, "build", "--n", str(n), "--json"], capture_output=True,
+        p = subprocess.run([a.tripack, "build", "--n", str(n), "--json"] + a.extra.split(), capture_output=True,
                            text=True, timeout=a.limit)
     except subprocess.TimeoutExpired:
         return {"n": n, "certified": "false", "seconds": f"{a.limit:.0f}",
