@@ -245,8 +245,9 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
   for (; rep.newton_steps < opt.max_newton_steps; t *= opt.t_factor) {
     ++rep.stages;
     bool centred = false;
-    for (int in_stage = 0;
-         in_stage < opt.max_stage_steps && rep.newton_steps < opt.max_newton_steps; ++in_stage) {
+    const int stage_steps = rep.stages == 1 ? opt.max_first_stage_steps : opt.max_stage_steps;
+    for (int in_stage = 0; in_stage < stage_steps && rep.newton_steps < opt.max_newton_steps;
+         ++in_stage) {
       const std::vector<Term> terms = near_terms(s, L);
       rep.constraints = static_cast<int>(terms.size());
       const bool same_terms = terms == last_terms;

@@ -31,6 +31,9 @@ struct InteriorRelaxOptions {
   double t_factor = 8;               // t grows by this per stage
   int max_newton_steps = 400;        // over all stages
   int max_stage_steps = 80;          // a stage not centred by then ends the relax (declined)
+  // The first stage's limit: from a start far from the maximum (a lattice with a long vacancy
+  // segment, whose disks travel several spacings) it is the journey, not a stall.
+  int max_first_stage_steps = 80;
   // Called after every Newton step with its number and the current lower bound D on d.
   std::function<void(int step, long double D)> on_step;
 };

@@ -167,18 +167,21 @@ void for_each_index(std::size_t count, int threads, const Work& work) {
   if (error) std::rethrow_exception(error);
 }
 
-// The fast ranking's relax: the interior-point relax alone, called again while it ends short in
-// its first stage and still raised d there. That is a long segment's start: its disks travel
-// several spacings at <= 0.1 diameter per Newton step, more than one stage's 80 steps allow
-// (n = 600: converged after 141-270 steps). A relax that ends short in a later stage is at the
-// last 1e-12 of a slip, where the LP relax finishes faster (n = 208: 4 LP steps against 700
-// more Newton steps that did not converge).
+// The fast ranking's relax: the interior-point relax alone, with a first stage of up to 400
+// Newton steps (a long segment's start: its disks travel several spacings at <= 0.1 diameter per
+// step; n = 600 converged after 141-270 steps where 80 declined), called again while it still
+// ends short there and raised d. A relax that ends short in a later stage is at the last 1e-12 of
+// a slip, where the LP relax finishes faster (n = 208: 4 LP steps against 700 more Newton steps
+// that did not converge).
 void relax_interior(Packing& p) {
-  InteriorRelaxReport report = interior_relax(p);
+  InteriorRelaxOptions options;
+  options.max_first_stage_steps = 400;
+  options.max_newton_steps = 800;
+  InteriorRelaxReport report = interior_relax(p, options);
   for (int again = 0; again < 3 && !report.converged && report.stages == 1 &&
                       report.d_end > report.d_start * (1 + 1e-15L);
        ++again)
-    report = interior_relax(p);
+    report = interior_relax(p, options);
 }
 
 // The LP relax from the interior relax's end (1 to 4 LP steps there) and the bonds.
@@ -197,6 +200,13 @@ Pattern finish_relaxed(Packing p) {
   return out;
 }
 
+// How many lattice lines lie between the segment and the nearest wall (0: it touches one).
+long lines_from_a_wall(long rows, const std::vector<Site>& segment) {
+  long nearest = rows;
+  for (const Site& s : segment) nearest = std::min({nearest, s.i, s.j, rows - 1 - s.i - s.j});
+  return nearest;
+}
+
 // The lattice with `segment` empty, relaxed from the exact lattice or (seed > 0) from a
 // jittered copy, by the chosen ranking.
 struct SegmentRelax {
@@ -211,11 +221,28 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     throw std::invalid_argument("a vacancy segment of " + std::to_string(vacancies) +
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
                                 " rows with a disk left on it");
-  const auto segments = straight_segments(rows, vacancies);
-  const std::size_t top = std::min(segments.size(), std::max<std::size_t>(1, search.top_segments));
-  const std::size_t finalists =
-      search.exhaustive ? top : std::min(segments.size(), std::max(top, search.lp_finalists));
-  const long long relaxes = static_cast<long long>(segments.size() + top * search.restarts);
+  auto segments = straight_segments(rows, vacancies);
+  const long n = triangular(rows) - vacancies;
+  if (!search.exhaustive && n > search.all_segments_up_to &&
+      segments.size() > search.segment_budget) {
+    std::stable_sort(segments.begin(), segments.end(),
+                     [rows](const std::vector<Site>& a, const std::vector<Site>& b) {
+                       return lines_from_a_wall(rows, a) < lines_from_a_wall(rows, b);
+                     });
+    segments.resize(search.segment_budget);
+  }
+  // Above all_segments_up_to disks the LP relax, slow from a restart's end (0.5-12 s per restart
+  // at n = 777 against 0.3 s for its interior relax), runs only on the top segments and on a
+  // restart whose interior relax alone ends above the best by more than its own 1e-13.
+  const bool large = !search.exhaustive && n > search.all_segments_up_to;
+  const bool few = !search.exhaustive && n > search.few_restarts_from;
+  const int restarts = few ? std::min(search.restarts, search.few_restarts) : search.restarts;
+  const std::size_t top =
+      std::min(segments.size(), few ? 1 : std::max<std::size_t>(1, search.top_segments));
+  const std::size_t finalists = search.exhaustive || large
+                                    ? top
+                                    : std::min(segments.size(), std::max(top, search.lp_finalists));
+  const long long relaxes = static_cast<long long>(segments.size() + top * restarts);
   long long done = 0;
   std::mutex progress_lock;
   auto relaxed_one = [&](const char* what) {
@@ -263,17 +290,22 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   });
   std::stable_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(finalists), denser);
   // The top segments from jittered copies of their lattice (seeds 1, 2, ...).
-  const std::size_t jobs = top * static_cast<std::size_t>(std::max(0, search.restarts));
+  const std::size_t jobs = top * static_cast<std::size_t>(std::max(0, restarts));
   std::vector<Pattern> restarted(jobs);
+  std::vector<char> finished(jobs, 1);
   for_each_index(jobs, search.threads, [&](std::size_t job) {
     throw_if_cancelled(search.cancel);
-    const std::size_t s = job / static_cast<std::size_t>(search.restarts);
-    const int restart = static_cast<int>(job % static_cast<std::size_t>(search.restarts)) + 1;
+    const std::size_t s = job / static_cast<std::size_t>(restarts);
+    const int restart = static_cast<int>(job % static_cast<std::size_t>(restarts)) + 1;
     std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
     Packing start =
         jittered(lattice_with_vacancies(rows, segments[order[s]]), rows, search.jitter, rng);
     if (search.exhaustive) {
       restarted[job] = relax_to_pattern(start);
+    } else if (large) {
+      relax_interior(start);
+      restarted[job].packing = std::move(start);
+      finished[job] = 0;
     } else {
       relax_interior(start);
       restarted[job] = finish_relaxed(std::move(start));
@@ -290,9 +322,14 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
       best.pattern = std::move(candidate);
       best.vacancies = segments[order[s]];
     }
-    for (int restart = 1; restart <= search.restarts; ++restart) {
-      Pattern& moved = restarted[s * static_cast<std::size_t>(search.restarts) +
-                                 static_cast<std::size_t>(restart - 1)];
+    for (int restart = 1; restart <= restarts; ++restart) {
+      const std::size_t job =
+          s * static_cast<std::size_t>(restarts) + static_cast<std::size_t>(restart - 1);
+      Pattern& moved = restarted[job];
+      if (!finished[job]) {
+        if (!(moved.packing.d > best.pattern.packing.d * (1 + 1e-13L))) continue;
+        moved = finish_relaxed(std::move(moved.packing));
+      }
       if (better_pattern(moved, best.pattern)) {
         best.pattern = std::move(moved);
         best.vacancies = segments[order[s]];

@@ -62,6 +62,17 @@ struct SegmentSearch {
   int restarts = 8;
   long double jitter = 1e-4L;    // in lattice spacings (see jittered() in the .cpp)
   std::size_t lp_finalists = 8;  // fast ranking: segments ranked again after the LP relax
+  // Fast ranking above `all_segments_up_to` disks: at most `segment_budget` segments, those
+  // nearest a wall (the lattice line next to a wall, then the next, ...; ties in enumeration
+  // order). The winners seen lie there: every p = 2 winner of k = 3..15 within 3 lines of a wall,
+  // n = 168's within 4, and at n = 1820 (p = 10) the bottom row's segments gain 3e-6 to 5e-6
+  // where 6 sampled further in gain 0 to 9e-7 (docs/performance.md, "build --n").
+  long all_segments_up_to = 300;
+  std::size_t segment_budget = 64;
+  // Above `few_restarts_from` disks the restarts are those of the densest segment only, with
+  // `few_restarts` seeds (each restart costs a whole relax: 15 s at n = 10^4).
+  long few_restarts_from = 3000;
+  int few_restarts = 4;
   bool exhaustive = false;
   int threads = 1;
   // Stage "construct", one report per relax (segments, then restarts); the enumeration throws
