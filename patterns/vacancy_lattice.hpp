@@ -49,14 +49,15 @@ Pattern relax_to_pattern(const Packing& start);
 // (1e-15 relative) goes to more bonds, as the atlas ranks ties. A bounded enumeration:
 // segments + top_segments * restarts relaxes, deterministic.
 //
-// The fast ranking (the default) relaxes every candidate by the interior-point relax alone,
-// continued while its first stage ends short and still gains (a long segment's disks travel
-// several spacings), and runs the LP relax, whose CLP simplex is the slow part from a start far
-// from the maximum (1.3-4.8 s per segment at n = 600 against 0.1-0.3 s from the interior relax's
-// end), only on the `lp_finalists` densest segments and on the restarts that reach the best d.
+// The fast ranking (the default) relaxes every candidate by the interior-point relax first,
+// with a first stage long enough for a long segment's disks to travel several spacings, and
+// runs the LP relax, whose CLP simplex is the slow part from a start far from the maximum
+// (1.3-4.8 s per segment at n = 600 against 0.1-0.3 s from the interior relax's end), after it.
+// Above `all_segments_up_to` disks it keeps a budget of segments, runs the LP relax only on the
+// `lp_finalists` densest, and on a restart only where its interior relax ends above the best.
 // `exhaustive` relaxes every candidate by interior + LP as it stands (the check of the fast
-// ranking: docs/performance.md, "build --n"). Both use `threads` threads; the result does not
-// depend on their number.
+// ranking: docs/classes.md §9, docs/performance.md "build --n"). Both use `threads` threads; the
+// result does not depend on their number.
 struct SegmentSearch {
   std::size_t top_segments = 3;
   int restarts = 8;
