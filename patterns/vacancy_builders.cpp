@@ -47,7 +47,7 @@ Pattern build_inflated_segment(const BuilderCall& c) {
     inflated = inflate_by_two(lattice_with_vacancies(rows, base.vacancies));
   if (!inflated || inflated->size() != expected)
     throw std::logic_error("a lattice with a vacancy segment does not inflate to its class's n");
-  return relax_to_pattern(*inflated);
+  return relax_to_pattern(*inflated, c.control && c.control->exhaustive);
 }
 
 const BuilderRegistration kVacancySegment{"vacancy-segment", build_vacancy_segment};

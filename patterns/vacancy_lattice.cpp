@@ -97,17 +97,6 @@ std::vector<std::vector<Site>> straight_segments(long rows, long length) {
   return out;
 }
 
-Pattern relax_to_pattern(const Packing& start) {
-  Packing p = start;
-  const RelaxReport lp = relax_near_lattice(p);
-  BondIdentification id = identify_bonds(p, lp.active);
-  Pattern out;
-  out.packing = std::move(p);
-  out.bonds = std::move(id.bonds);
-  out.rattlers = std::move(id.rattlers);
-  return out;
-}
-
 namespace {
 
 // A copy of the lattice start shrunk towards the centroid by 2 * jitter spacings and each
@@ -268,6 +257,8 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     Packing p = lattice_with_vacancies(rows, segments[s]);
     if (search.exhaustive)
       relaxed[s].lp = relax_near_lattice(p);
+    else if (large)
+      interior_relax(p);  // the first ranking: stages of 80 Newton steps, ended where one stalls
     else
       relax_interior(p);
     relaxed[s].packing = std::move(p);
@@ -289,6 +280,7 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
       BondIdentification id = identify_bonds(r.packing, r.lp.active);
       patterns[order[f]] = {r.packing, std::move(id.bonds), std::move(id.rattlers), {}, {}};
     } else {
+      if (large) relax_interior(r.packing);  // the finalists' relax to the end
       patterns[order[f]] = finish_relaxed(r.packing);
       r.packing = patterns[order[f]].packing;
     }
@@ -306,7 +298,7 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     Packing start =
         jittered(lattice_with_vacancies(rows, segments[order[s]]), rows, search.jitter, rng);
     if (search.exhaustive) {
-      restarted[job] = relax_to_pattern(start);
+      restarted[job] = relax_to_pattern(start, true);
     } else if (large) {
       relax_interior(start);
       restarted[job].packing = std::move(start);
@@ -342,6 +334,22 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     }
   }
   return best;
+}
+
+Pattern relax_to_pattern(const Packing& start, bool exhaustive) {
+  if (!exhaustive) {
+    Packing p = start;
+    relax_interior(p);
+    return finish_relaxed(std::move(p));
+  }
+  Packing p = start;
+  const RelaxReport lp = relax_near_lattice(p);
+  BondIdentification id = identify_bonds(p, lp.active);
+  Pattern out;
+  out.packing = std::move(p);
+  out.bonds = std::move(id.bonds);
+  out.rattlers = std::move(id.rattlers);
+  return out;
 }
 
 }  // namespace tripack::patterns

@@ -35,10 +35,12 @@ std::vector<std::vector<Site>> straight_segments(long rows, long length);
 // The vacancy set's orbit key under the 6 symmetries (for de-duplication and comparisons).
 std::vector<Site> canonical_vacancies(long rows, std::vector<Site> vacancies);
 
-// A start moved to the local maximum of d near it: the interior-point relax, then the LP relax
-// (which ends the interior relax's last 1e-13 and loads the contacts), then the bonds identified
-// and polished (analysis/bonds.hpp). Deterministic.
-Pattern relax_to_pattern(const Packing& start);
+// A start moved to the local maximum of d near it, and its bonds identified and polished
+// (analysis/bonds.hpp). Deterministic. `exhaustive`: the interior-point relax (one call), then
+// the LP relax below 1000 disks, as the exhaustive enumeration relaxes; otherwise the fast
+// ranking's relax (the interior relax to the end, then the LP relax below 5000 disks, which
+// from there takes 1 to 4 LP steps and loads the contacts the bonds are identified from).
+Pattern relax_to_pattern(const Packing& start, bool exhaustive = false);
 
 // The densest of the relaxed lattices Delta(rows) minus one straight segment of `vacancies`
 // sites, over every segment up to symmetry. The relax from the exact lattice can end at a
@@ -67,11 +69,14 @@ struct SegmentSearch {
   // nearest a wall (the lattice line next to a wall, then the next, ...; ties in enumeration
   // order). The winners seen lie there: every p = 2 winner of k = 3..15 within 3 lines of a wall,
   // n = 168's within 4, and at n = 1820 (p = 10) the bottom row's segments gain 3e-6 to 5e-6
-  // where 6 sampled further in gain 0 to 9e-7 (docs/performance.md, "build --n").
+  // where 6 sampled further in gain 0 to 9e-7 (docs/classes.md §9). They are ranked by the
+  // interior relax with its default stages (n = 1000, p = 35: 0.45 s per segment, in the same
+  // order as the relax to the end, 1.2-10 s), and only the `lp_finalists` densest are relaxed to
+  // the end.
   long all_segments_up_to = 300;
   std::size_t segment_budget = 64;
   // Above `few_restarts_from` disks the restarts are those of the densest segment only, with
-  // `few_restarts` seeds (each restart costs a whole relax: 15 s at n = 10^4).
+  // `few_restarts` seeds (each restart costs a whole relax: 2-10 s at n = 1000, 15 s at 10^4).
   long few_restarts_from = 3000;
   int few_restarts = 4;
   bool exhaustive = false;
