@@ -13,20 +13,24 @@ from concurrent.futures import ThreadPoolExecutor
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--tripack", default="build/tripack")
-ap.add_argument("--n", default="2..1000")
+ap.add_argument("--n", default="2..1000", help="a range A..B, or a list A,B,C")
 ap.add_argument("--jobs", type=int, default=1, help="builds at once (1: timings undisturbed)")
 ap.add_argument("--limit", type=float, default=600, help="seconds before a build is stopped")
 ap.add_argument("--out", default="data/build-scan.csv")
 ap.add_argument("--extra", default="", help="more build options, e.g. '--exhaustive'")
 a = ap.parse_args()
-lo, hi = (int(x) for x in a.n.split(".."))
+if ".." in a.n:
+    lo, hi = (int(x) for x in a.n.split(".."))
+    wanted = range(lo, hi + 1)
+else:
+    wanted = [int(x) for x in a.n.split(",")]
 FIELDS = ["n", "class", "k", "p", "variant", "d", "bonds", "rattlers", "certified", "seconds",
           "note"]
 
 done = {}
 if os.path.exists(a.out):
     done = {int(r["n"]): r for r in csv.DictReader(open(a.out))}
-todo = [n for n in range(lo, hi + 1) if n not in done]
+todo = [n for n in wanted if n not in done]
 new_file = not os.path.exists(a.out)
 out = open(a.out, "a", newline="")
 writer = csv.DictWriter(out, FIELDS)
@@ -69,7 +73,7 @@ except KeyboardInterrupt:
     print("interrupted: every finished row is in " + a.out, file=sys.stderr)
     sys.exit(130)
 
-rows = [done[n] for n in range(lo, hi + 1) if n in done]
+rows = [done[n] for n in wanted if n in done]
 secs = [float(r["seconds"]) for r in rows]
 cert = sum(r["certified"] == "true" for r in rows)
 if rows:

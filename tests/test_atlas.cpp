@@ -41,7 +41,9 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
     if (e.rank == 1) best[e.n()] = e.d.value();
   int members = 0;
   for (const auto& member : pipeline::class_members_up_to(catalogue, 200)) {
-    const Pattern built = build_pattern(catalogue, member);
+    BuildControl control;
+    control.threads = 2;
+    const Pattern built = build_pattern(catalogue, member, control);
     const long long n = static_cast<long long>(built.packing.size());
     if (n < 2) continue;
     ASSERT_TRUE(best.count(n)) << "n = " << n << " is not in the atlas";

@@ -93,6 +93,35 @@ TEST(VacancySegment, CertifiesAMemberAboveTheLpRelaxLimit) {
   EXPECT_GT(b.record.d.value(), 1.0L / 45 * (1 + 1e-6L));
 }
 
+TEST(VacancySegment, FastRankingGivesTheExhaustivePacking) {
+  // Members where the exhaustive enumeration's winner is not the first by the interior relax
+  // alone: n = 118's best segment is the 22nd by it, n = 114's the 9th, and a restart of the
+  // third segment wins there (docs/classes.md §9). The fast ranking must give the same packing:
+  // d to 1e-15 relative (two distinct packings of one n differ by 1e-12 or more in the atlas;
+  // the relaxes agree to ~1e-17) and the same bonds.
+  for (const auto& [k, p] : std::vector<std::pair<long, long>>{{13, 2}, {9, 6}}) {
+    BuildControl fast, exhaustive;
+    fast.threads = exhaustive.threads = 2;
+    exhaustive.exhaustive = true;
+    const Pattern a = build_pattern(catalogue(), {"vacancy-segment", k, p, ""}, fast);
+    const Pattern b = build_pattern(catalogue(), {"vacancy-segment", k, p, ""}, exhaustive);
+    EXPECT_LT(std::fabs(a.packing.d / b.packing.d - 1), 1e-15L) << "k=" << k << " p=" << p;
+    EXPECT_EQ(a.bonds.size(), b.bonds.size()) << "k=" << k << " p=" << p;
+  }
+}
+
+TEST(VacancySegment, FastRankingAboveThreeHundredDisksBeatsTheLattice) {
+  // Above 300 disks the fast ranking relaxes at most 64 segments, those nearest a wall
+  // (docs/classes.md §9). k = 4, p = 28 (n = 500): 8 segments, all kept; the winner is certified
+  // and more than 1% above its lattice's d = 1/31, the spacing of Delta(32) (the exhaustive
+  // enumeration's is 1.6% above).
+  pipeline::BuildSettings settings;
+  const auto b = pipeline::build_and_certify(catalogue(), {"vacancy-segment", 4, 28, ""}, settings);
+  ASSERT_TRUE(b.analysis);
+  EXPECT_TRUE(b.analysis->certified()) << b.analysis->status();
+  EXPECT_GT(b.record.d.value(), 1.0L / 31 * (1 + 1e-2L));
+}
+
 TEST(InflatedSegment, ReproducesDeltaTwoKPlusThreeMinusThree) {
   // docs/findings.md §3: the best of Delta(2k+3)-3 is the inflation of the best Delta(k+2)-2.
   expect_reproduces({"inflated-segment", 5, 2, "t88a", 0.0833512626571264412680038067303L, 234, 0});
