@@ -47,7 +47,11 @@ Pattern build_inflated_segment(const BuilderCall& c) {
     inflated = inflate_by_two(lattice_with_vacancies(rows, base.vacancies));
   if (!inflated || inflated->size() != expected)
     throw std::logic_error("a lattice with a vacancy segment does not inflate to its class's n");
-  return relax_to_pattern(*inflated, c.control && c.control->exhaustive);
+  // As the enumeration relaxes (patterns/vacancy_lattice.hpp): exhaustively up to 300 disks.
+  const bool exhaustive =
+      (c.control && c.control->exhaustive) ||
+      static_cast<long>(inflated->size()) <= segment_search(c).all_segments_up_to;
+  return relax_to_pattern(*inflated, exhaustive);
 }
 
 const BuilderRegistration kVacancySegment{"vacancy-segment", build_vacancy_segment};

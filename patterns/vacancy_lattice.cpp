@@ -212,8 +212,12 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
                                 " rows with a disk left on it");
   auto segments = straight_segments(rows, vacancies);
   const long n = triangular(rows) - vacancies;
-  if (!search.exhaustive && n > search.all_segments_up_to &&
-      segments.size() > search.segment_budget) {
+  // Up to all_segments_up_to disks every candidate is relaxed as the exhaustive enumeration
+  // relaxes it (0.05-0.3 s each there): the fast relaxes ended elsewhere on the degenerate
+  // maxima of n = 69, 109, 169, 188 and 197 (1e-15 to 7e-13 apart, 188 then not certified), and
+  // ranking by the interior relax alone missed n = 118's best segment (22nd by it).
+  const bool exhaustive = search.exhaustive || n <= search.all_segments_up_to;
+  if (!exhaustive && segments.size() > search.segment_budget) {
     std::stable_sort(segments.begin(), segments.end(),
                      [rows](const std::vector<Site>& a, const std::vector<Site>& b) {
                        return lines_from_a_wall(rows, a) < lines_from_a_wall(rows, b);
@@ -224,18 +228,12 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   // at n = 777 against 0.3 s for its interior relax), runs only on the lp_finalists densest
   // segments and on a restart whose interior relax alone ends above the best by more than its
   // own 1e-13.
-  const bool large = !search.exhaustive && n > search.all_segments_up_to;
-  const bool few = !search.exhaustive && n > search.few_restarts_from;
+  const bool few = !exhaustive && n > search.few_restarts_from;
   const int restarts = few ? std::min(search.restarts, search.few_restarts) : search.restarts;
   const std::size_t top =
       std::min(segments.size(), few ? 1 : std::max<std::size_t>(1, search.top_segments));
-  // Up to all_segments_up_to disks every segment gets the LP relax (from the interior relax's
-  // end: 0.01-0.2 s there); ranking by the interior relax alone missed n = 118's best segment,
-  // 22nd by it. Above, the lp_finalists densest by the interior relax.
-  const std::size_t finalists = search.exhaustive ? top
-                                : large
-                                    ? std::min(segments.size(), std::max(top, search.lp_finalists))
-                                    : segments.size();
+  const std::size_t finalists =
+      exhaustive ? top : std::min(segments.size(), std::max(top, search.lp_finalists));
   const long long relaxes = static_cast<long long>(segments.size() + top * restarts);
   long long done = 0;
   std::mutex progress_lock;
@@ -255,12 +253,10 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   for_each_index(segments.size(), search.threads, [&](std::size_t s) {
     throw_if_cancelled(search.cancel);
     Packing p = lattice_with_vacancies(rows, segments[s]);
-    if (search.exhaustive)
+    if (exhaustive)
       relaxed[s].lp = relax_near_lattice(p);
-    else if (large)
-      interior_relax(p);  // the first ranking: stages of 80 Newton steps, ended where one stalls
     else
-      relax_interior(p);
+      interior_relax(p);  // the first ranking: stages of 80 Newton steps, ended where one stalls
     relaxed[s].packing = std::move(p);
     relaxed_one("segments relaxed");
   });
@@ -276,11 +272,11 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   for_each_index(finalists, search.threads, [&](std::size_t f) {
     throw_if_cancelled(search.cancel);
     SegmentRelax& r = relaxed[order[f]];
-    if (search.exhaustive) {
+    if (exhaustive) {
       BondIdentification id = identify_bonds(r.packing, r.lp.active);
       patterns[order[f]] = {r.packing, std::move(id.bonds), std::move(id.rattlers), {}, {}};
     } else {
-      if (large) relax_interior(r.packing);  // the finalists' relax to the end
+      relax_interior(r.packing);  // the finalists' relax to the end
       patterns[order[f]] = finish_relaxed(r.packing);
       r.packing = patterns[order[f]].packing;
     }
@@ -297,15 +293,12 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     std::mt19937_64 rng(static_cast<std::uint64_t>(restart));
     Packing start =
         jittered(lattice_with_vacancies(rows, segments[order[s]]), rows, search.jitter, rng);
-    if (search.exhaustive) {
+    if (exhaustive) {
       restarted[job] = relax_to_pattern(start, true);
-    } else if (large) {
+    } else {
       relax_interior(start);
       restarted[job].packing = std::move(start);
       finished[job] = 0;
-    } else {
-      relax_interior(start);
-      restarted[job] = finish_relaxed(std::move(start));
     }
     relaxed_one("restarts relaxed");
   });
