@@ -123,10 +123,9 @@ for try in 1 2; do
 done
 
 # A log (stderr not a terminal) has a line for every stage the explorer runs (billiards runs
-# only for the matrix stress set, n >= 254: too long for this test).
-"$TRIPACK" explore --max-n 30 --search-steps 3 --atlas none --out "$tmp/r7" >/dev/null 2>"$tmp/log7.txt"
+# only for the matrix stress set, n >= 254: too long for this test): the first exploration's.
 for stage in building search compare accuracy; do
-  check "the log says '$stage'" grep -qi "explore: $stage" "$tmp/log7.txt"
+  check "the log says '$stage'" grep -qi "explore: $stage" "$tmp/err.txt"
 done
 
 # Only tripack's own lines: CHOLMOD printed "matrix not positive definite" on stdout for each
