@@ -217,18 +217,19 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   // maxima of n = 69, 109, 169, 188 and 197 (1e-15 to 7e-13 apart, 188 then not certified), and
   // ranking by the interior relax alone missed n = 118's best segment (22nd by it).
   const bool exhaustive = search.exhaustive || n <= search.all_segments_up_to;
-  if (!exhaustive && segments.size() > search.segment_budget) {
+  const bool few = !exhaustive && n > search.few_restarts_from;
+  const std::size_t budget = few ? search.few_segments : search.segment_budget;
+  if (!exhaustive && segments.size() > budget) {
     std::stable_sort(segments.begin(), segments.end(),
                      [rows](const std::vector<Site>& a, const std::vector<Site>& b) {
                        return lines_from_a_wall(rows, a) < lines_from_a_wall(rows, b);
                      });
-    segments.resize(search.segment_budget);
+    segments.resize(budget);
   }
   // Above all_segments_up_to disks the LP relax, slow from a restart's end (0.5-12 s per restart
   // at n = 777 against 0.3 s for its interior relax), runs only on the lp_finalists densest
   // segments and on a restart whose interior relax alone ends above the best by more than its
   // own 1e-13.
-  const bool few = !exhaustive && n > search.few_restarts_from;
   const int restarts = few ? std::min(search.restarts, search.few_restarts) : search.restarts;
   const std::size_t top =
       std::min(segments.size(), few ? 1 : std::max<std::size_t>(1, search.top_segments));
@@ -255,8 +256,13 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
     Packing p = lattice_with_vacancies(rows, segments[s]);
     if (exhaustive)
       relaxed[s].lp = relax_near_lattice(p);
-    else
-      interior_relax(p);  // the first ranking: stages of 80 Newton steps, ended where one stalls
+    else {
+      // The first ranking: stages of 80 Newton steps, ended where one stalls (at most 80 steps
+      // in all above few_restarts_from disks).
+      InteriorRelaxOptions ranking;
+      if (few) ranking.max_newton_steps = 80;
+      interior_relax(p, ranking);
+    }
     relaxed[s].packing = std::move(p);
     relaxed_one("segments relaxed");
   });

@@ -75,10 +75,13 @@ struct SegmentSearch {
   // the end.
   long all_segments_up_to = 300;
   std::size_t segment_budget = 64;
-  // Above `few_restarts_from` disks the restarts are those of the densest segment only, with
-  // `few_restarts` seeds (each restart costs a whole relax: 2-10 s at n = 1000, 15 s at 10^4).
+  // Above `few_restarts_from` disks: the restarts are those of the densest segment only, with
+  // `few_restarts` seeds (each restart costs a whole relax: 2-10 s at n = 1000, 15 s at 10^4),
+  // at most `few_segments` segments, ranked by the interior relax's first 80 Newton steps
+  // (one Newton step costs 60 ms at n = 10^4).
   long few_restarts_from = 3000;
   int few_restarts = 4;
+  std::size_t few_segments = 16;
   bool exhaustive = false;
   int threads = 1;
   // Stage "construct", one report per relax (segments, then restarts); the enumeration throws
