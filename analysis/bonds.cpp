@@ -1,7 +1,10 @@
 #include "analysis/bonds.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/neighbours.hpp"
@@ -127,6 +130,103 @@ BondIdentification identify_bonds(Packing& pk, const std::vector<Bond>& loaded,
     std::erase(cand, gap_only[drop].first);
     ++out.rejected;
   }
+  return out;
+}
+
+namespace {
+
+// Gap of bond b in units of d at pk (long double).
+long double gap_of(const Packing& pk, const Bond& b) {
+  const Vec2L& p = pk.points[static_cast<std::size_t>(b.a)];
+  if (b.is_wall()) return wall_distance(p, b.side(), 1.0L) / pk.d;
+  return norm(p - pk.points[static_cast<std::size_t>(b.b)]) / pk.d - 1;
+}
+
+}  // namespace
+
+PreciseIdentification identify_bonds_multiprecision(const Packing& start,
+                                                    const std::vector<Bond>& hints,
+                                                    long double gap_threshold, int digits,
+                                                    DropRule rule, std::size_t max_drops) {
+  PreciseIdentification out;
+  out.rule = rule;
+  std::vector<Bond> cand = hints;
+  for_each_pair_within(start.points, start.d * (1 + gap_threshold),
+                       [&](int i, int j, long double) { cand.push_back(Bond::pair(i, j)); });
+  for (std::size_t i = 0; i < start.size(); ++i)
+    for (Side s : kSides)
+      if (wall_distance(start.points[i], s, 1.0L) <= gap_threshold * start.d)
+        cand.push_back(Bond::wall(static_cast<int>(i), s));
+  std::sort(cand.begin(), cand.end());
+  cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+  out.candidates = static_cast<int>(cand.size());
+  // The floor below which a gap is not resolved: 10^-digits, or what the polish measurably left
+  // of the bond equations if more; 10^6 times it counts as closed.
+  const long double precision = std::pow(10.0L, -static_cast<long double>(digits));
+  for (std::size_t round = 0; round < max_drops + cand.size() + 8; ++round) {
+    std::vector<Bond> bonds = cand;
+    std::vector<int> rattlers = find_rattlers(start, bonds);
+    if (bonds.empty()) {
+      out.failure = "every disk is a rattler by the surround test with the contacts that remain";
+      return out;
+    }
+    Packing compromise = start;
+    const PolishReport ld = polish_bond_system(compromise, bonds, rattlers);
+    ++out.polishes;
+    if (ld.converged) {
+      MultiprecisionPolish mp = polish_multiprecision(start, bonds, rattlers, digits);
+      ++out.polishes;
+      if (mp.converged) {
+        const double clearance = centre_rattlers_multiprecision(mp, rattlers);
+        PreciseGaps gaps = precise_gaps(mp, bonds, rattlers);
+        const long double closed = 1e6L * std::max(precision, gaps.bond_floor);
+        std::vector<Bond> join;
+        for (const auto& g : gaps.gaps)
+          if (!g.rattler && g.gap <= closed) join.push_back(g.contact);
+        if (join.empty()) {
+          out.bonds = std::move(bonds);
+          out.rattlers = std::move(rattlers);
+          out.polish = std::move(mp);
+          out.gaps = std::move(gaps);
+          out.rattler_clearance = clearance;
+          out.found = true;
+          return out;
+        }
+        // Contacts the bond system closes (or overlaps it makes): bonds too.
+        out.implied += static_cast<int>(join.size());
+        cand.insert(cand.end(), join.begin(), join.end());
+        std::sort(cand.begin(), cand.end());
+        cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+        continue;
+      }
+    }
+    // No solution: drop a candidate, by `rule`, among those whose removal leaves every held
+    // disk held: in a lattice region the surround test needs every contact (they are collinear
+    // in pairs), and dropping a true one there turns disks into rattlers in a cascade, often to
+    // the whole packing.
+    if (static_cast<std::size_t>(out.dropped) >= max_drops) break;
+    const Packing& at = rule == DropRule::Widest ? start : compromise;
+    std::vector<std::pair<long double, Bond>> ranked;
+    for (const Bond& b : bonds) ranked.emplace_back(gap_of(at, b), b);
+    std::sort(ranked.begin(), ranked.end(),
+              [](const auto& x, const auto& y) { return x.first > y.first; });
+    // The first few of the ranking only (each trial is a surround test over every bond).
+    constexpr std::size_t kTries = 32;
+    Bond drop = ranked.front().second;  // if every drop tried frees disks
+    for (std::size_t k = 0; k < std::min(kTries, ranked.size()); ++k) {
+      const Bond& b = ranked[k].second;
+      std::vector<Bond> trial = cand;
+      std::erase(trial, b);
+      if (find_rattlers(start, trial).size() <= rattlers.size()) {
+        drop = b;
+        break;
+      }
+    }
+    std::erase(cand, drop);
+    ++out.dropped;
+  }
+  out.failure = fmt::format("no consistent bond set after dropping {} of {} candidates",
+                            out.dropped, out.candidates);
   return out;
 }
 

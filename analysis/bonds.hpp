@@ -7,6 +7,7 @@
 
 #include "core/packing.hpp"
 #include "polish/polish.hpp"
+#include "polish/polish_mp.hpp"
 
 namespace tripack {
 
@@ -47,5 +48,41 @@ struct BondIdentification {
 BondIdentification identify_bonds(Packing& packing, const std::vector<Bond>& loaded,
                                   long double gap_threshold = 1e-6L,
                                   std::size_t max_rejections = SIZE_MAX);
+
+// Bonds and rattlers decided on a configuration polished in MPFR (docs/certified.md, "The
+// multiprecision certificate"), where long double cannot tell a bond from a near contact (a gap
+// of 1e-11 d when the long double polish places centres to 1e-12 d). Candidates are `hints`
+// (earlier bonds, a builder's, the relax's loaded contacts) and every contact of `start` closer
+// than `gap_threshold` d. Repeatedly: rattlers by the surround test; the bond system polished,
+// in long double, then in MPFR to `digits`; when it has no solution, a candidate is dropped by
+// `rule` (never one whose removal turns held disks into rattlers, if another will do); when it
+// has one, every non-bond gap between held disks is evaluated in MPFR, and any within 10^6 x
+// the precision's floor of zero (a contact the bond system implies, or an overlap) joins the
+// bonds. It ends with a consistent bond set whose other gaps all stand clear of the floor.
+// Neither rule is always right: a true contact can start wider open than a false one (n = 169:
+// 1.9e-10 d against 8.9e-11 d), and the least-squares compromise spreads a false contact's
+// stretch over its true neighbours (n = 188 from its analysed state); callers try both.
+enum class DropRule {
+  Widest,     // the candidate widest open at the start (the double-precision path's rule)
+  Stretched,  // the one most stretched at the least-squares compromise: it most wants to open
+};
+struct PreciseIdentification {
+  std::vector<Bond> bonds;  // sorted, rattlers' bonds removed
+  std::vector<int> rattlers;
+  MultiprecisionPolish polish;        // of `bonds` to `digits`, rattlers centred in their cages
+  PreciseGaps gaps;                   // at that polish
+  long double rattler_clearance = 0;  // smallest, in units of d (+inf without rattlers)
+  int candidates = 0;                 // contacts considered
+  DropRule rule = DropRule::Widest;
+  int dropped = 0;      // candidates dropped because the bond system had no solution with them
+  int implied = 0;      // contacts added because the polish closed them
+  int polishes = 0;     // bond systems polished (long double and MPFR)
+  bool found = false;   // a consistent bond set with held disks
+  std::string failure;  // why not, when !found
+};
+PreciseIdentification identify_bonds_multiprecision(const Packing& start,
+                                                    const std::vector<Bond>& hints,
+                                                    long double gap_threshold, int digits,
+                                                    DropRule rule, std::size_t max_drops = 100);
 
 }  // namespace tripack

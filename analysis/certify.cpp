@@ -10,6 +10,7 @@
 #include <string>
 
 #include "analysis/linear_program.hpp"
+#include "polish/polish_mp.hpp"
 
 namespace tripack {
 
@@ -193,10 +194,56 @@ StressReport stress_certificate(const Packing& pk, const std::vector<Bond>& bond
   return rep;
 }
 
+namespace {
+
+using SpMat = Eigen::SparseMatrix<double>;
+// CHOLMOD's supernodal Cholesky (METIS ordering, BLAS): 4Delta(707), 10^6 disks, certifies in
+// 7 minutes, and 4Delta(150) in 3.8 s where Eigen's simplicial LDL^T took 4.6 s
+// (docs/performance.md). A factorization that succeeds shows A positive definite in floating
+// point, as the LDL^T's positive pivots did.
+using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
+// A matrix that is not positive definite is a verdict here (the certificate declines), not a
+// warning for CHOLMOD to print on stderr.
+void quiet(Cholesky& c) {
+  c.cholmod().print = 0;
+}
+
+// A strictly positive self-stress, if one exists, by infeasible-start Newton on the analytic
+// centre: maximize sum(log f - f) subject to G^T f = 0 (bounded, with its optimum inside
+// f > 0, exactly when such a stress exists). Each step solves with G^T F^2 G, the pattern of
+// A = G^T G. The plain projection of all-ones already fails at n = 7261 (even-ripple k = 60).
+// False when no full (feasible) step was reached; f is then meaningless.
+bool analytic_centre(const SpMat& G, const SpMat& A, Eigen::VectorXd& f, int& steps) {
+  const Eigen::Index m = G.rows();
+  f = Eigen::VectorXd::Ones(m);
+  Cholesky weighted;
+  quiet(weighted);
+  weighted.analyzePattern(A);
+  bool feasible = false;
+  for (int it = 0; it < 60; ++it) {
+    ++steps;
+    const Eigen::VectorXd f2 = f.cwiseProduct(f);
+    const SpMat W = SpMat(G.transpose()) * f2.asDiagonal() * G;
+    weighted.factorize(W);
+    if (weighted.info() != Eigen::Success) break;
+    const Eigen::VectorXd nu = weighted.solve(G.transpose() * (2 * f - f2));
+    const Eigen::VectorXd df = f - f2 - f2.cwiseProduct(G * nu);
+    double step = 1;  // stay inside f > 0 (fraction to the boundary 0.9)
+    for (Eigen::Index b = 0; b < m; ++b)
+      if (df[b] < 0) step = std::min(step, 0.9 * f[b] / -df[b]);
+    f += step * df;
+    feasible = feasible || step == 1;
+    // Newton decrement: done once the centre is reached to a few digits.
+    if (feasible && df.cwiseQuotient(f).squaredNorm() < 1e-8) break;
+  }
+  return feasible;
+}
+
+}  // namespace
+
 FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bonds,
                                  const std::vector<int>& rattlers, double min_eigenvalue,
                                  long double min_force) {
-  using SpMat = Eigen::SparseMatrix<double>;
   FastCertificate out;
   int columns = 0;
   const auto col = motion_columns(pk.size(), rattlers, columns);
@@ -212,14 +259,6 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   SpMat G(m, columns);
   G.setFromTriplets(t.begin(), t.end());
   const SpMat A = SpMat(G.transpose()) * G;
-  // CHOLMOD's supernodal Cholesky (METIS ordering, BLAS): 4Delta(707), 10^6 disks, certifies in
-  // 7 minutes, and 4Delta(150) in 3.8 s where Eigen's simplicial LDL^T took 4.6 s
-  // (docs/performance.md). A factorization that succeeds shows A positive definite in floating
-  // point, as the LDL^T's positive pivots did.
-  using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
-  // A matrix that is not positive definite is a verdict here (the certificate declines), not a
-  // warning for CHOLMOD to print on stderr.
-  auto quiet = [](Cholesky& c) { c.cholmod().print = 0; };
   Cholesky ldlt;
   quiet(ldlt);
   ldlt.compute(A);
@@ -243,32 +282,8 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
     out.declined = "G^T G is nearly singular (smallest eigenvalue below the threshold)";
     return out;
   }
-  // A strictly positive self-stress, if one exists, by infeasible-start Newton on the analytic
-  // centre: maximize sum(log f - f) subject to G^T f = 0 (bounded, with its optimum inside
-  // f > 0, exactly when such a stress exists). Each step solves with G^T F^2 G, the pattern of
-  // A. The plain projection of all-ones already fails at n = 7261 (even-ripple k = 60).
-  Eigen::VectorXd f = Eigen::VectorXd::Ones(m);
-  Cholesky weighted;
-  quiet(weighted);
-  weighted.analyzePattern(A);
-  bool feasible = false;
-  for (int it = 0; it < 60; ++it) {
-    ++out.newton_steps;
-    const Eigen::VectorXd f2 = f.cwiseProduct(f);
-    const SpMat W = SpMat(G.transpose()) * f2.asDiagonal() * G;
-    weighted.factorize(W);
-    if (weighted.info() != Eigen::Success) break;
-    const Eigen::VectorXd nu = weighted.solve(G.transpose() * (2 * f - f2));
-    const Eigen::VectorXd df = f - f2 - f2.cwiseProduct(G * nu);
-    double step = 1;  // stay inside f > 0 (fraction to the boundary 0.9)
-    for (Eigen::Index b = 0; b < m; ++b)
-      if (df[b] < 0) step = std::min(step, 0.9 * f[b] / -df[b]);
-    f += step * df;
-    feasible = feasible || step == 1;
-    // Newton decrement: done once the centre is reached to a few digits.
-    if (feasible && df.cwiseQuotient(f).squaredNorm() < 1e-8) break;
-  }
-  if (!feasible) {
+  Eigen::VectorXd f;
+  if (!analytic_centre(G, A, f, out.newton_steps)) {
     out.declined = "no strictly positive stress found (Newton stayed infeasible)";
     return out;
   }
@@ -292,6 +307,159 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
     return out;
   }
   out.accepted = true;
+  return out;
+}
+
+MultiprecisionCertificate multiprecision_certificate(const MultiprecisionPolish& polish,
+                                                     const std::vector<Bond>& bonds,
+                                                     const std::vector<int>& rattlers) {
+  using SpL = Eigen::SparseMatrix<long double>;
+  using VecL = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+  using LLT = Eigen::SimplicialLLT<SpL, Eigen::Lower, Eigen::AMDOrdering<int>>;
+  constexpr long double eps = std::numeric_limits<long double>::epsilon();
+  MultiprecisionCertificate out;
+  const Packing pk = rounded_packing(polish);
+  int columns = 0;
+  const auto col = motion_columns(pk.size(), rattlers, columns);
+  const auto m = static_cast<Eigen::Index>(bonds.size());
+  if (columns == 0 || m == 0) {
+    out.declined = "no bonds between non-rattlers";
+    return out;
+  }
+  const std::vector<Vec2L> dirs = precise_directions(polish, bonds);
+  std::vector<Eigen::Triplet<long double>> t;
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    const auto row = static_cast<Eigen::Index>(b);
+    const int ca = col[static_cast<std::size_t>(bonds[b].a)];
+    const int cb = bonds[b].is_wall() ? -1 : col[static_cast<std::size_t>(bonds[b].b)];
+    if (ca >= 0) {
+      t.emplace_back(row, ca, dirs[b].x);
+      t.emplace_back(row, ca + 1, dirs[b].y);
+    }
+    if (cb >= 0) {
+      t.emplace_back(row, cb, -dirs[b].x);
+      t.emplace_back(row, cb + 1, -dirs[b].y);
+    }
+  }
+  SpL G(m, columns);
+  G.setFromTriplets(t.begin(), t.end());
+  const SpL Gt = G.transpose();
+  const SpL A = Gt * G;
+  // The rounding of A's entries: each is a sum of at most k products of direction components
+  // (|.| <= 1, each within one rounding of the exact one), k the most bonds on one column.
+  long double k = 0;
+  for (Eigen::Index c = 0; c < Gt.outerSize(); ++c)
+    k = std::max(k, static_cast<long double>(Gt.innerVector(c).nonZeros()));
+  const long double rounding_of_A =
+      std::sqrt(static_cast<long double>(A.nonZeros())) * (k + 3) * k * eps;
+
+  LLT llt(A);
+  if (llt.info() != Eigen::Success) {
+    out.declined =
+        "G^T G is singular at the polished coordinates (a first-order motion keeps "
+        "every bond)";
+    return out;
+  }
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<double> u(-1, 1);
+  VecL x(columns);
+  for (auto& v : x) v = u(rng);
+  x.normalize();
+  for (int it = 0; it < 30; ++it) {
+    x = llt.solve(x);
+    x.normalize();
+  }
+  out.eigenvalue_estimate = x.dot(A * x);
+  const long double mu = out.eigenvalue_estimate / 2;
+  SpL shifted = A;
+  for (Eigen::Index c = 0; c < columns; ++c) shifted.coeffRef(c, c) -= mu;
+  LLT lower(shifted);
+  if (!(mu > 0) || lower.info() != Eigen::Success) {
+    out.declined = "the smallest eigenvalue of G^T G is not resolved in long double";
+    return out;
+  }
+  {
+    const SpL L = lower.matrixL();
+    const SpL LLt = L * SpL(L.transpose());
+    SpL permuted;
+    permuted = shifted.selfadjointView<Eigen::Lower>().twistedBy(lower.permutationP());
+    out.eigenvalue_error = SpL(LLt - permuted).norm() + rounding_of_A;
+  }
+  out.min_eigenvalue = mu - out.eigenvalue_error;
+  out.rigid = out.eigenvalue_error <= mu / 2;
+  if (!out.rigid) {
+    out.declined = "the smallest eigenvalue of G^T G is not resolved above its rounding error";
+    return out;
+  }
+
+  // A start stress in double: the analytic centre, else the max-min LP.
+  const Eigen::SparseMatrix<double> Gd = G.cast<double>();
+  const Eigen::SparseMatrix<double> Ad = Eigen::SparseMatrix<double>(Gd.transpose()) * Gd;
+  std::vector<long double> start(bonds.size());
+  Eigen::VectorXd f0;
+  int steps = 0;
+  if (analytic_centre(Gd, Ad, f0, steps) && f0.minCoeff() > 0) {
+    out.stress_start = "analytic centre";
+    for (std::size_t b = 0; b < bonds.size(); ++b) start[b] = f0[static_cast<Eigen::Index>(b)];
+  } else {
+    const StressReport lp = stress_certificate(pk, bonds, rattlers);
+    if (!lp.exists || !(lp.min_force > 0)) {
+      out.declined = "no strictly positive stress in double precision to start from";
+      return out;
+    }
+    out.stress_start = "max-min LP";
+    start = lp.forces;
+  }
+  auto solve_with = [](const LLT& f) {
+    return [&f](const std::vector<long double>& r) {
+      const VecL y = f.solve(Eigen::Map<const VecL>(r.data(), static_cast<Eigen::Index>(r.size())));
+      return std::vector<long double>(y.data(), y.data() + y.size());
+    };
+  };
+  PreciseBalance balance =
+      balance_multiprecision(polish, bonds, rattlers, start, {}, solve_with(llt));
+  auto smallest = [](const std::vector<long double>& f) {
+    return f.empty() ? 0.0L : *std::min_element(f.begin(), f.end());
+  };
+  if (!(smallest(balance.forces) > 0)) {
+    // The plain projection moved a small force through zero: the weighted one changes each force
+    // in proportion to its square, keeping small forces small.
+    std::vector<long double> w(start.size());
+    for (std::size_t b = 0; b < w.size(); ++b) w[b] = start[b] * start[b];
+    SpL W = Gt * VecL(Eigen::Map<const VecL>(w.data(), m)).asDiagonal() * G;
+    LLT weighted(W);
+    if (weighted.info() == Eigen::Success) {
+      out.weighted = true;
+      balance = balance_multiprecision(polish, bonds, rattlers, start, w, solve_with(weighted));
+    }
+  }
+  out.balance_sweeps = balance.sweeps;
+  auto& rep = out.stress;
+  rep.exists = true;
+  rep.forces = balance.forces;
+  rep.residual = balance.residual;
+  rep.min_force = rep.min_pair_force = rep.min_wall_force =
+      std::numeric_limits<long double>::infinity();
+  long double norm2 = 0;
+  for (std::size_t b = 0; b < bonds.size(); ++b) {
+    const long double f = rep.forces[b];
+    rep.min_force = std::min(rep.min_force, f);
+    auto& side = bonds[b].is_wall() ? rep.min_wall_force : rep.min_pair_force;
+    side = std::min(side, f);
+    norm2 += f * f;
+  }
+  const long double direction_error =
+      2 * std::pow(10.0L, -static_cast<long double>(polish.digits)) / pk.d;
+  out.force_error =
+      (std::sqrt(static_cast<long double>(columns)) * balance.residual +
+       std::sqrt(2.0L * static_cast<long double>(m)) * direction_error * std::sqrt(norm2)) /
+      std::sqrt(out.min_eigenvalue);
+  rep.strictly_positive = balance.converged && rep.min_force > 1e6L * out.force_error;
+  out.strictly_positive = rep.strictly_positive;
+  if (!balance.converged)
+    out.declined = "the stress did not balance to the working precision";
+  else if (!out.strictly_positive)
+    out.declined = "no strictly positive stress resolved at this precision";
   return out;
 }
 

@@ -20,6 +20,8 @@
 
 namespace tripack {
 
+struct MultiprecisionPolish;  // polish/polish_mp.hpp
+
 struct RigidityReport {
   bool rigid = false;
   double opening = 0;         // optimum of the first LP (0 when jammed)
@@ -65,5 +67,39 @@ struct FastCertificate {
 FastCertificate fast_certificate(const Packing& packing, const std::vector<Bond>& bonds,
                                  const std::vector<int>& rattlers, double min_eigenvalue = 1e-8,
                                  long double min_force = 1e-9L);
+
+// The same two facts as fast_certificate, G injective and a strictly positive self-stress, at a
+// configuration polished in MPFR, every error measured rather than assumed (docs/certified.md,
+// "The multiprecision certificate"):
+//  * G is built from the bond directions computed in MPFR and rounded to long double. A long
+//    double sparse Cholesky factorization of A = G^T G and inverse iteration estimate its
+//    smallest eigenvalue; a second factorization, of A - mu I with mu half the estimate, gives
+//    the lower bound lambda_min(A) >= mu - ||L L^T - (A - mu I)||_F - (the rounding of A's
+//    entries): `min_eigenvalue`. Rigid when the subtracted errors are at most mu / 2.
+//  * A start stress (the analytic centre's Newton in double, else the max-min stress LP) is
+//    balanced in MPFR by balance_multiprecision (plain projection, then the projection weighted
+//    by the start forces if a force went negative). Its distance to an exact self-stress at the
+//    polished coordinates is at most (|G^T f|_2 + ||dG||_F |f|_2) / sqrt(min_eigenvalue), dG the
+//    directions' error (2 10^-digits / d per component): `force_error`. Strictly positive when
+//    the smallest force exceeds 1e6 x force_error.
+// Accepted (certified) = rigid and strictly positive, which is the verdict of the rigidity LPs
+// and the stress LP together, as for fast_certificate; the caller checks the gaps.
+struct MultiprecisionCertificate {
+  bool rigid = false;
+  bool strictly_positive = false;
+  std::string declined;                 // why not, when not certified
+  long double eigenvalue_estimate = 0;  // inverse iteration's Rayleigh quotient
+  long double min_eigenvalue = 0;       // proven lower bound of lambda_min(G^T G)
+  long double eigenvalue_error = 0;     // what the bound subtracted from mu (measured)
+  StressReport stress;  // forces (pair forces sum to 1), smallest ones, residual |G^T f| (MPFR)
+  long double force_error = 0;  // bound on the forces' distance to an exact self-stress
+  std::string stress_start;     // "analytic centre" or "max-min LP"
+  bool weighted = false;        // the weighted projection was needed
+  int balance_sweeps = 0;
+  bool certified() const { return rigid && strictly_positive; }
+};
+MultiprecisionCertificate multiprecision_certificate(const MultiprecisionPolish& polish,
+                                                     const std::vector<Bond>& bonds,
+                                                     const std::vector<int>& rattlers);
 
 }  // namespace tripack

@@ -55,7 +55,14 @@ struct PackingRecord {
   bool certified = false;
   std::string verdict;              // the certificate's one-line verdict
   std::vector<long double> forces;  // the stress certificate's, per bond
-  std::string graph_hash;           // identity (analysis/compare.hpp identify fills it)
+  // The margins the certificate resolved (docs/certified.md): the smallest non-bond gap between
+  // held disks in units of d (+inf when there is none) and the smallest bond force (pair forces
+  // summing to 1). certificate_digits: 0 for the double-precision certificate, else the MPFR
+  // digits of the multiprecision one that decided.
+  long double smallest_gap = std::numeric_limits<long double>::infinity();
+  long double min_force = 0;
+  int certificate_digits = 0;
+  std::string graph_hash;  // identity (analysis/compare.hpp identify fills it)
   std::vector<PackingSource> sources;
   std::string label;     // among the packings of its n (core/ranking.hpp): t22a, t17a40, ...
   std::size_t rank = 0;  // 1 = the best of its n in its list

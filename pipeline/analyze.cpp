@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -15,7 +16,26 @@
 
 namespace tripack::pipeline {
 
+namespace {
+
+// The smallest non-bond gap between held disks (rattlers' play apart), +inf if none.
+long double smallest_held_gap(const std::vector<Gap>& gaps) {
+  for (const auto& g : gaps)
+    if (!g.rattler) return g.gap;
+  return std::numeric_limits<long double>::infinity();
+}
+
+}  // namespace
+
 std::string Analysis::status() const {
+  if (precise && precise->certified)
+    return fmt::format(
+        "certified at {} digits (multiprecision): rigid with a strictly positive stress (strict "
+        "local optimum of d)",
+        precise->digits);
+  if (precise)
+    return fmt::format("not certified: the multiprecision certificate ({} digits) declined: {}",
+                       precise->digits, precise->declined);
   if (!identification.polish.converged)
     return "bond system has no solution near the relaxed state (not certified)";
   if (pattern.bonds.empty())
@@ -57,6 +77,9 @@ PackingRecord record_of(const Analysis& analysis) {
   record.certified = analysis.certified();
   record.verdict = analysis.status();
   record.forces = analysis.stress.forces;
+  record.min_force = analysis.stress.exists ? analysis.stress.min_force : 0;
+  record.smallest_gap = smallest_held_gap(analysis.gaps);
+  record.certificate_digits = analysis.precise ? analysis.precise->digits : 0;
   record.seconds = analysis.times.total();
   identify(record);
   return record;
@@ -206,6 +229,222 @@ void bonds_and_certificates(Analysis& a, const std::vector<Bond>& loaded, bool l
       timed(a.times.stress, [&] { return stress_certificate(p.packing, p.bonds, p.rattlers); });
 }
 
+// The multiprecision certificate (docs/certified.md, "The multiprecision certificate").
+
+// Why the double-precision verdict cannot stand alone (empty: it can). The margins are measured
+// against the long double positions' resolution: the polish leaves each bond equation exact to
+// its residual, which places the centres to about residual / sigma, sigma = sqrt(lambda_min(G^T
+// G)) the smallest singular value of the bond-opening map (the LP-free certificate's estimate).
+// A gap or a force within 1000x of that is not told from zero.
+std::string precise_reason(const Analysis& a, const AnalysisOptions& o) {
+  if (!a.certified()) return "the double-precision certificate declined";
+  if (o.reference_bonds && a.pattern.bonds != *o.reference_bonds)
+    return "the bonds from geometry differ from the builder's";
+  if (o.reference_rattlers && a.pattern.rattlers != *o.reference_rattlers)
+    return "the rattlers from geometry differ from the builder's";
+  const long double lambda = a.fast.min_eigenvalue;
+  if (!(lambda > 0)) return "G^T G is singular in double precision (the LPs decided rigidity)";
+  const long double sigma = std::sqrt(lambda);
+  const long double L = 1 / a.pattern.packing.d;
+  const long double residual =
+      std::max(a.identification.polish.max_residual,
+               std::numeric_limits<long double>::epsilon() * std::max(1.0L, L));
+  const long double position = residual / sigma;  // disk units = units of d
+  const long double gap = smallest_held_gap(a.gaps);
+  if (gap < 1e3L * position)
+    return fmt::format(
+        "the smallest non-bond gap, {:.3Lg} d, is within 1000x of the long double positions' "
+        "resolution, {:.2Lg} d",
+        gap, position);
+  const long double force = a.stress.residual / sigma;
+  if (a.stress.min_force < 1e3L * force)
+    return fmt::format(
+        "the smallest force, {:.3Lg}, is within 1000x of its resolution in double, {:.2Lg}",
+        a.stress.min_force, force);
+  return {};
+}
+
+// Digits: the smallest gap double precision saw, g = 10^-e (e capped at long double's 19), is
+// resolved by e + 20 orders at 2e + 20 digits; at least 40.
+int precise_digits(const Analysis& a) {
+  long double g = smallest_held_gap(a.gaps);
+  if (!std::isfinite(g))
+    for (const auto& x : a.gaps)
+      if (x.gap > 0) {
+        g = x.gap;
+        break;
+      }
+  const int e = g > 0 && std::isfinite(g)
+                    ? std::clamp(static_cast<int>(std::ceil(-std::log10(g))), 1, 19)
+                    : 19;
+  return std::max(40, 2 * e + 20);
+}
+
+void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
+                   std::string reason) {
+  const auto t0 = Clock::now();
+  PreciseStage st;
+  st.reason = std::move(reason);
+  // The deep relax: relax's LP steps on to long double's resolution. Relax stops once a step
+  // gains less than 1e-13 relative; a contact whose force is 1e-10 then can still stand 1e-7 d
+  // open, where a true gap is 1e-11 d, and no candidate set is right (build --n 188: every disk
+  // a rattler). Not above lp_limit disks (its LPs do not scale).
+  // From the analysis' input: the double path's result has its rattlers centred in their cages,
+  // and where it called every disk a rattler that moved every disk.
+  Packing start = a.pattern.packing;
+  std::vector<Bond> loaded = a.relax.active;
+  if (start.size() <= o.lp_limit) {
+    tell(o.progress, "multiprecision certificate: deep relax (LP steps)", 0, start.d);
+    RelaxOptions deep;
+    deep.stationary = 1e-18L;
+    deep.min_trust = 1e-19L;
+    if (o.progress)
+      deep.on_step = [&](int step, long double d) {
+        tell(o.progress, "multiprecision certificate: deep relax (LP steps)", step, d);
+      };
+    Packing moved = input;
+    st.deep_relax = timed(st.deep_relax_seconds, [&] { return relax_packing(moved, deep); });
+    st.deep_relaxed = true;
+    // Relax never lowers d below its start; keep its result (and its loaded contacts) unless the
+    // double path ended higher.
+    if (moved.d >= start.d) {
+      start = std::move(moved);
+      loaded = st.deep_relax.active;
+    }
+  }
+  // Candidates: the double path's bonds, the relaxes' loaded contacts, the builder's bonds, and
+  // (in identify_bonds_multiprecision) every contact within 1e-6 d, the double path's own
+  // threshold.
+  std::vector<Bond> hints = a.pattern.bonds;
+  hints.insert(hints.end(), a.relax.active.begin(), a.relax.active.end());
+  hints.insert(hints.end(), loaded.begin(), loaded.end());
+  if (o.reference_bonds)
+    hints.insert(hints.end(), o.reference_bonds->begin(), o.reference_bonds->end());
+  // The state's own contacts: the gaps below the widest jump (ratio) between consecutive gaps
+  // under 1e-6 d. Gaps below long double's resolution of a distance (coordinates to ~1e-19,
+  // divided by d) count as that resolution: their ratios mean nothing. After the deep relax the
+  // jump is clean where the packing has settled (sparse-rows k = 10: 1.2e-18 d, then 2.1e-8 d).
+  std::vector<Bond> contacts;
+  {
+    const auto all = smallest_gaps(start, {}, SIZE_MAX);
+    const long double resolution = 64 * std::numeric_limits<long double>::epsilon() / start.d;
+    auto positive = [&](long double g) { return std::max(g, resolution); };
+    std::size_t cut = 0;
+    long double jump = 0;
+    for (std::size_t k = 1; k < all.size() && all[k - 1].gap < 1e-6L; ++k) {
+      const long double ratio = positive(all[k].gap) / positive(all[k - 1].gap);
+      if (ratio > jump) {
+        jump = ratio;
+        cut = k;
+      }
+    }
+    for (std::size_t k = 0; k < cut; ++k) contacts.push_back(all[k].contact);
+    std::sort(contacts.begin(), contacts.end());
+    if (cut > 0) {
+      st.contacts = static_cast<int>(cut);
+      st.contact_gap = all[cut - 1].gap;
+      st.next_gap = all[cut].gap;
+    }
+  }
+  const int first = precise_digits(a);
+  // One identification and certificate; false when more digits could not help.
+  auto attempt = [&](PreciseStage& t, const std::vector<Bond>& from, long double threshold,
+                     DropRule rule) {
+    tell(o.progress, fmt::format("multiprecision certificate ({} digits)", t.digits), 0, start.d);
+    t.identification = identify_bonds_multiprecision(start, from, threshold, t.digits, rule);
+    const auto& id = t.identification;
+    if (!id.found) {
+      t.declined = id.failure;
+      return false;
+    }
+    t.gap_floor =
+        std::max(std::pow(10.0L, -static_cast<long double>(t.digits)), id.gaps.bond_floor);
+    t.smallest_gap = std::numeric_limits<long double>::infinity();
+    for (const auto& g : id.gaps.gaps)
+      if (!g.rattler) {
+        t.smallest_gap = g.gap;
+        t.smallest_gap_contact = g.contact;
+        break;
+      }
+    t.certificate = multiprecision_certificate(id.polish, id.bonds, id.rattlers);
+    // A gap is resolved when it stands half the working digits above the floor (1e-11 d against
+    // a floor of 1e-42 at 42 digits: 31 orders).
+    const long double resolved = t.gap_floor * std::pow(10.0L, t.digits / 2.0L);
+    const bool gaps_resolved = t.smallest_gap > resolved;
+    const bool cages = !(id.rattler_clearance < -t.gap_floor);
+    t.certified = t.certificate.certified() && gaps_resolved && cages;
+    if (t.certified) return false;
+    t.declined = !cages ? "a rattler has no room in its cage"
+                 : !t.certificate.certified()
+                     ? t.certificate.declined
+                     : fmt::format(
+                           "the smallest non-bond gap, {:.3Lg} d, is not resolved "
+                           "above {:.2Lg} d",
+                           t.smallest_gap, resolved);
+    return cages && (!gaps_resolved || (t.certificate.rigid && !t.certificate.strictly_positive));
+  };
+  // Both drop rules (analysis/bonds.hpp), then twice the digits if precision was short. The
+  // report keeps the certified attempt, else the last that found bonds, else the last.
+  std::optional<PreciseStage> kept;
+  for (int round = 0; round < 2 && !(kept && kept->certified); ++round) {
+    bool short_of_digits = false;
+    // The candidates within 1e-6 d by either drop rule, then the state's own contacts alone.
+    for (int way = 0; way < 3; ++way) {
+      if (way == 2 && contacts.empty()) break;
+      PreciseStage t = st;
+      t.attempts = round + 1;
+      t.digits = round == 0 ? first : 2 * first;
+      const bool more =
+          way < 2 ? attempt(t, hints, 1e-6L, way == 0 ? DropRule::Widest : DropRule::Stretched)
+                  : attempt(t, contacts, 0, DropRule::Widest);
+      short_of_digits = more || short_of_digits;
+      if (!kept || t.certified || t.identification.found || !kept->identification.found)
+        kept = std::move(t);
+      if (kept->certified) break;
+    }
+    if (!short_of_digits) break;
+  }
+  st = std::move(*kept);
+  if (!st.identification.found && st.contacts > 0) {
+    std::vector<Bond> held = contacts;
+    const auto rattlers = find_rattlers(start, held);
+    st.declined = fmt::format(
+        "{} contacts within {:.2Lg} d (the next gap {:.2Lg} d){}; {}", st.contacts, st.contact_gap,
+        st.next_gap,
+        st.deep_relax.converged ? ", first-order stationary (no LP step gains 1e-18)" : "",
+        held.empty() ? "with them every disk is a rattler by the surround test: not jammed at "
+                       "first order (a degenerate maximum no first-order certificate covers)"
+                     : fmt::format("with them {} rattlers, but no bond set with a solution: {}",
+                                   rattlers.size(), st.identification.failure));
+  }
+
+  if (st.certified) {
+    auto& id = st.identification;
+    if (o.reference_bonds) {
+      st.reference_open = 0;
+      for (const Bond& b : *o.reference_bonds)
+        if (!std::binary_search(id.bonds.begin(), id.bonds.end(), b) &&
+            !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.a) &&
+            (b.is_wall() || !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.b)))
+          ++st.reference_open;
+    }
+    a.pattern.packing = rounded_packing(id.polish);
+    a.pattern.bonds = id.bonds;
+    a.pattern.rattlers = id.rattlers;
+    a.rigidity = {};
+    a.rigidity.rigid = true;
+    a.stress = st.certificate.stress;
+    a.gaps.clear();
+    for (const auto& g : id.gaps.gaps) {
+      if (a.gaps.size() == 64) break;
+      a.gaps.push_back({g.contact, g.gap, g.rattler});
+    }
+  }
+  st.seconds = seconds_since(t0);
+  a.times.certificate_mp = st.seconds;
+  a.precise = std::move(st);
+}
+
 }  // namespace
 
 Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
@@ -236,8 +475,11 @@ Analysis analyze_packing(const Packing& start, const AnalysisOptions& options) {
     a.times.relax = seconds_since(t0);  // declined fast paths count as relax time
     bonds_and_certificates(a, a.relax.active, true, progress);
   }
+  a.gaps = smallest_gaps(a.pattern.packing, a.pattern.bonds, 64);
+  if (options.multiprecision_certificate && a.pattern.packing.size() >= 2)
+    if (std::string reason = precise_reason(a, options); !reason.empty())
+      precise_stage(a, start, options, std::move(reason));
   Packing& pk = a.pattern.packing;
-  a.gaps = smallest_gaps(pk, a.pattern.bonds, 64);
   if (options.digits > kLongDoubleDigits) tell(progress, "multiprecision polish", 0, pk.d);
   if (options.digits > kLongDoubleDigits)
     a.multiprecision = timed(a.times.multiprecision, [&] {

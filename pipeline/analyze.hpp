@@ -25,8 +25,9 @@ namespace tripack::pipeline {
 struct StageTimes {
   double construct = 0, relax = 0, bonds = 0, rigidity = 0, stress = 0, multiprecision = 0,
          exact = 0;
+  double certificate_mp = 0;  // the multiprecision certificate (identification and certificate)
   double total() const {
-    return construct + relax + bonds + rigidity + stress + multiprecision + exact;
+    return construct + relax + bonds + rigidity + stress + multiprecision + exact + certificate_mp;
   }
 };
 
@@ -44,6 +45,44 @@ struct AnalysisOptions {
   // A long analysis says what it is doing (the pipeline prints nothing): a stage's start and, in
   // relax, every step (Progress::step) with the current d.
   ProgressFn progress;
+  // The bonds and rattlers a caller expects (a builder's). When the geometry's differ, the
+  // multiprecision certificate decides, and reports which of these bonds are contacts of the
+  // configuration it certifies.
+  std::optional<std::vector<Bond>> reference_bonds;
+  std::optional<std::vector<int>> reference_rattlers;
+  // The multiprecision certificate (docs/certified.md) runs when the double-precision one
+  // declines or cannot resolve its own margins; false: never.
+  bool multiprecision_certificate = true;
+};
+
+// The multiprecision certificate's stage (docs/certified.md, "The multiprecision certificate"):
+// bonds and rattlers identified on a configuration polished in MPFR, then rigidity and a strictly
+// positive stress at that precision, with the margins it resolved.
+struct PreciseStage {
+  std::string reason;  // why it ran: what double precision could not resolve
+  int digits = 0;      // MPFR digits (chosen from the smallest gap double precision saw)
+  int attempts = 0;    // 2 when the first digits did not resolve the margins
+  // The deep relax first run (LP steps until a step gains less than 1e-18 relative, long
+  // double's resolution, instead of relax's 1e-13): where relax stops, contacts with forces of
+  // 1e-10 can still be 1e-7 d open.
+  RelaxReport deep_relax;
+  bool deep_relaxed = false;  // it ran (not above lp_limit disks)
+  double deep_relax_seconds = 0;
+  PreciseIdentification identification;
+  MultiprecisionCertificate certificate;
+  long double smallest_gap = 0;  // smallest non-bond gap between held disks, units of d (MPFR)
+  Bond smallest_gap_contact;
+  long double gap_floor = 0;  // the precision's floor: max(10^-digits, the bonds' own |gap|)
+  // Reference (builder's) bonds that are not contacts of the certified configuration (gap above
+  // the closed threshold); -1 without a reference.
+  int reference_open = -1;
+  // Without a bond set: the deep-relaxed state's contacts (the gaps below the widest jump
+  // between consecutive gaps), the widest of them and the next gap; 0 when not looked at.
+  int contacts = 0;
+  long double contact_gap = 0, next_gap = 0;
+  double seconds = 0;
+  bool certified = false;
+  std::string declined;  // why not, when !certified
 };
 
 struct Analysis {
@@ -60,8 +99,13 @@ struct Analysis {
   std::size_t lp_limit = 0;  // (for the verdict's wording)
   std::optional<MultiprecisionPolish> multiprecision;
   std::vector<Gap> gaps;  // the 64 smallest non-bond gaps (near contacts and rattlers' play)
+  // The multiprecision certificate, when it ran. Its verdict is the analysis' verdict then, and
+  // when it certified, pattern, stress and gaps are its own (pattern.packing its coordinates
+  // rounded to long double).
+  std::optional<PreciseStage> precise;
   StageTimes times;
   bool certified() const {
+    if (precise) return precise->certified;
     return rigidity.rigid && stress.strictly_positive && identification.polish.converged;
   }
   std::string status() const;  // one line: the certificate's verdict

@@ -12,9 +12,27 @@
 
 namespace tripack::pipeline {
 
+// Verified: every claim of the build holds. When the multiprecision certificate identified the
+// bonds (docs/certified.md, "The multiprecision certificate"), the geometry's bonds are the ones
+// to trust: the builder's bond list comes from long double contact detection, which cannot tell
+// a bond from a gap of 1e-11 d. Then the builder's bonds need not equal them but must all be
+// contacts of the certified configuration (none open at its precision: the builder built this
+// packing, and may only have missed contacts its own polish implies); the builder's d must be
+// the certified one (kSameDTolerance); and the catalogue's expected counts apply to the
+// certified bonds and rattlers. Otherwise the geometry's bonds and rattlers must equal the
+// builder's, and the catalogue's counts apply to the builder's.
 bool BuildResult::verified() const {
-  return analysis && counts_match() && bonds_match() && rattlers_match() && analysis->certified() &&
-         (!exact || exact->ok);
+  if (!analysis || !analysis->certified() || (exact && !exact->ok)) return false;
+  const auto& precise = analysis->precise;
+  if (!precise) return counts_match() && bonds_match() && rattlers_match();
+  const Pattern& geometry = analysis->pattern;
+  const bool counts =
+      (!bonds_expected || static_cast<long long>(geometry.bonds.size()) == *bonds_expected) &&
+      (!rattlers_expected ||
+       static_cast<long long>(geometry.rattlers.size()) == *rattlers_expected);
+  const long double d = pattern.packing.d, certified_d = geometry.packing.d;
+  return counts && precise->reference_open == 0 &&
+         std::fabs(d - certified_d) <= kSameDTolerance * certified_d;
 }
 
 namespace {
@@ -88,6 +106,9 @@ void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSetting
   if (certify) {
     AnalysisOptions options;
     options.digits = settings.digits;
+    // Where the geometry's bonds differ from these, the multiprecision certificate decides.
+    options.reference_bonds = b.pattern.bonds;
+    options.reference_rattlers = b.pattern.rattlers;
     // The analysis reports every stage and relax step: there it also stops when cancelled.
     if (settings.progress || settings.cancel)
       options.progress = [&settings](const Progress& p) {

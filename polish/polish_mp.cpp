@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "core/neighbours.hpp"
 #include "polish/bond_system.hpp"
 #include "polish/polish.hpp"
 
@@ -840,6 +841,267 @@ std::string oler_delta_from_L(const std::string& L, long long n) {
   mpfr_div_ui(t.get(), t.get(), 2, kRnd);
   mpfr_sub(t.get(), Lv.get(), t.get(), kRnd);
   return fixed(t.get(), decimals);
+}
+
+}  // namespace tripack
+
+namespace tripack {
+
+namespace {
+
+// A converged polish read back at its working precision: every centre and d, in the unit
+// triangle, plus sqrt(3)/2 for the walls.
+struct ReadBack {
+  mpfr_prec_t prec;
+  std::vector<Mp> x, y;
+  Mp d, h;
+  std::vector<Vec2L> rounded;  // each coordinate rounded to long double
+  explicit ReadBack(const MultiprecisionPolish& polish)
+      : prec(working_bits(polish.digits)), d(prec), h(prec) {
+    if (!polish.converged)
+      throw std::invalid_argument("multiprecision evaluation of a polish that did not converge");
+    const std::size_t n = polish.points.size();
+    x.assign(n, Mp(prec));
+    y.assign(n, Mp(prec));
+    rounded.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      mpfr_set_str(x[i].get(), polish.points[i][0].c_str(), 10, kRnd);
+      mpfr_set_str(y[i].get(), polish.points[i][1].c_str(), 10, kRnd);
+      rounded[i] = {mpfr_get_ld(x[i].get(), kRnd), mpfr_get_ld(y[i].get(), kRnd)};
+    }
+    mpfr_set_str(d.get(), polish.d.c_str(), 10, kRnd);
+    mpfr_sqrt_ui(h.get(), 3, kRnd);
+    mpfr_div_2ui(h.get(), h.get(), 1, kRnd);
+  }
+  // Signed distance of centre i to side s into out (unit triangle).
+  void wall(std::size_t i, Side s, Mp& out, Mp& t) const {
+    switch (s) {
+      case Side::Bottom:
+        mpfr_set(out.get(), y[i].get(), kRnd);
+        return;
+      case Side::Left:  // h x - y/2
+        mpfr_mul(out.get(), h.get(), x[i].get(), kRnd);
+        break;
+      case Side::Right:  // h (1 - x) - y/2
+        mpfr_ui_sub(t.get(), 1, x[i].get(), kRnd);
+        mpfr_mul(out.get(), h.get(), t.get(), kRnd);
+        break;
+    }
+    mpfr_div_2ui(t.get(), y[i].get(), 1, kRnd);
+    mpfr_sub(out.get(), out.get(), t.get(), kRnd);
+  }
+  // Gap of bond b in units of d into out.
+  void gap(const Bond& b, Mp& out, Mp& t, Mp& u) const {
+    const auto a = static_cast<std::size_t>(b.a);
+    if (b.is_wall()) {
+      wall(a, b.side(), out, t);
+    } else {
+      const auto c = static_cast<std::size_t>(b.b);
+      mpfr_sub(t.get(), x[a].get(), x[c].get(), kRnd);
+      mpfr_sub(u.get(), y[a].get(), y[c].get(), kRnd);
+      mpfr_hypot(out.get(), t.get(), u.get(), kRnd);
+      mpfr_sub(out.get(), out.get(), d.get(), kRnd);
+    }
+    mpfr_div(out.get(), out.get(), d.get(), kRnd);
+  }
+  // Unit direction of bond b (pair: from b.b to b.a; wall: inward normal) into (ux, uy).
+  void direction(const Bond& b, Mp& ux, Mp& uy, Mp& t) const {
+    const auto a = static_cast<std::size_t>(b.a);
+    if (b.is_wall()) {
+      switch (b.side()) {
+        case Side::Bottom:
+          mpfr_set_zero(ux.get(), 1);
+          mpfr_set_ui(uy.get(), 1, kRnd);
+          return;
+        case Side::Left:
+          mpfr_set(ux.get(), h.get(), kRnd);
+          break;
+        case Side::Right:
+          mpfr_neg(ux.get(), h.get(), kRnd);
+          break;
+      }
+      mpfr_set_si_2exp(uy.get(), -1, -1, kRnd);
+      return;
+    }
+    const auto c = static_cast<std::size_t>(b.b);
+    mpfr_sub(ux.get(), x[a].get(), x[c].get(), kRnd);
+    mpfr_sub(uy.get(), y[a].get(), y[c].get(), kRnd);
+    mpfr_hypot(t.get(), ux.get(), uy.get(), kRnd);
+    mpfr_div(ux.get(), ux.get(), t.get(), kRnd);
+    mpfr_div(uy.get(), uy.get(), t.get(), kRnd);
+  }
+};
+
+}  // namespace
+
+PreciseGaps precise_gaps(const MultiprecisionPolish& polish, const std::vector<Bond>& bonds,
+                         const std::vector<int>& rattlers) {
+  const ReadBack s(polish);
+  const std::size_t n = s.x.size();
+  std::vector<Bond> sorted = bonds;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<char> loose(n, 1);  // a rattler, or a disk without bonds
+  for (const Bond& b : sorted) {
+    loose[static_cast<std::size_t>(b.a)] = 0;
+    if (!b.is_wall()) loose[static_cast<std::size_t>(b.b)] = 0;
+  }
+  for (int r : rattlers) loose[static_cast<std::size_t>(r)] = 1;
+  PreciseGaps out;
+  Mp g(s.prec), t(s.prec), u(s.prec);
+  auto visit = [&](const Bond& b, bool near_loose) {
+    s.gap(b, g, t, u);
+    const long double v = mpfr_get_ld(g.get(), kRnd);
+    if (std::binary_search(sorted.begin(), sorted.end(), b))
+      out.bond_floor = std::max(out.bond_floor, std::fabs(v));
+    else
+      out.gaps.push_back({b, v, near_loose});
+  };
+  long double d = mpfr_get_ld(s.d.get(), kRnd);
+  for_each_pair_within(s.rounded, d * 1.25L, [&](int i, int j, long double) {
+    visit(Bond::pair(i, j),
+          loose[static_cast<std::size_t>(i)] || loose[static_cast<std::size_t>(j)]);
+  });
+  for (std::size_t i = 0; i < n; ++i)
+    for (Side side : kSides)
+      if (wall_distance(s.rounded[i], side, 1.0L) < 0.25L * d)
+        visit(Bond::wall(static_cast<int>(i), side), loose[i]);
+  // Bonds farther apart than the neighbour search reaches (a polish that moved far) still count.
+  for (const Bond& b : sorted) {
+    s.gap(b, g, t, u);
+    out.bond_floor = std::max(out.bond_floor, std::fabs(mpfr_get_ld(g.get(), kRnd)));
+  }
+  std::sort(out.gaps.begin(), out.gaps.end(),
+            [](const PreciseGap& a, const PreciseGap& b) { return a.gap < b.gap; });
+  return out;
+}
+
+Packing rounded_packing(const MultiprecisionPolish& polish) {
+  const ReadBack s(polish);
+  return {s.rounded, mpfr_get_ld(s.d.get(), kRnd)};
+}
+
+std::vector<Vec2L> precise_directions(const MultiprecisionPolish& polish,
+                                      const std::vector<Bond>& bonds) {
+  const ReadBack s(polish);
+  Mp ux(s.prec), uy(s.prec), t(s.prec);
+  std::vector<Vec2L> out;
+  out.reserve(bonds.size());
+  for (const Bond& b : bonds) {
+    s.direction(b, ux, uy, t);
+    out.push_back({mpfr_get_ld(ux.get(), kRnd), mpfr_get_ld(uy.get(), kRnd)});
+  }
+  return out;
+}
+
+PreciseBalance balance_multiprecision(
+    const MultiprecisionPolish& polish, const std::vector<Bond>& bonds,
+    const std::vector<int>& rattlers, const std::vector<long double>& forces,
+    const std::vector<long double>& weights,
+    const std::function<std::vector<long double>(const std::vector<long double>&)>& solve) {
+  const ReadBack s(polish);
+  const std::size_t n = s.x.size(), m = bonds.size();
+  if (forces.size() != m || (!weights.empty() && weights.size() != m))
+    throw std::invalid_argument("balance_multiprecision: one force and weight per bond");
+  std::vector<int> col(n, 0);
+  for (int r : rattlers) col[static_cast<std::size_t>(r)] = -1;
+  int columns = 0;
+  for (auto& c : col)
+    if (c == 0) {
+      c = columns;
+      columns += 2;
+    }
+  // The directions and the forces at the working precision.
+  std::vector<Mp> ux(m, Mp(s.prec)), uy(m, Mp(s.prec)), f(m, Mp(s.prec)), w(m, Mp(s.prec));
+  Mp t(s.prec), v(s.prec), pair_sum(s.prec);
+  for (std::size_t e = 0; e < m; ++e) {
+    s.direction(bonds[e], ux[e], uy[e], t);
+    mpfr_set_ld(f[e].get(), forces[e], kRnd);
+    mpfr_set_ld(w[e].get(), weights.empty() ? 1.0L : weights[e], kRnd);
+  }
+  std::vector<Mp> r(static_cast<std::size_t>(columns), Mp(s.prec));
+  std::vector<long double> rl(static_cast<std::size_t>(columns));
+  auto column = [&](int disk) { return col[static_cast<std::size_t>(disk)]; };
+  // r = G^T f (the net force on every non-rattler); returns max |r|.
+  auto net = [&]() {
+    for (Mp& c : r) mpfr_set_zero(c.get(), 1);
+    for (std::size_t e = 0; e < m; ++e) {
+      const Bond& b = bonds[e];
+      for (int side = 0; side < 2; ++side) {
+        const int disk = side == 0 ? b.a : b.b;
+        if (disk < 0) continue;
+        const int c = column(disk);
+        if (c < 0) continue;
+        const auto cu = static_cast<std::size_t>(c);
+        mpfr_mul(t.get(), f[e].get(), ux[e].get(), kRnd);
+        (side == 0 ? mpfr_add : mpfr_sub)(r[cu].get(), r[cu].get(), t.get(), kRnd);
+        mpfr_mul(t.get(), f[e].get(), uy[e].get(), kRnd);
+        (side == 0 ? mpfr_add : mpfr_sub)(r[cu + 1].get(), r[cu + 1].get(), t.get(), kRnd);
+      }
+    }
+    long double largest = 0;
+    for (std::size_t c = 0; c < r.size(); ++c) {
+      rl[c] = mpfr_get_ld(r[c].get(), kRnd);
+      largest = std::max(largest, std::fabs(rl[c]));
+    }
+    return largest;
+  };
+  // The pair forces' sum, for the scale of the residual (forces are compared after scaling).
+  auto pair_total = [&]() {
+    mpfr_set_zero(pair_sum.get(), 1);
+    for (std::size_t e = 0; e < m; ++e)
+      if (!bonds[e].is_wall()) mpfr_add(pair_sum.get(), pair_sum.get(), f[e].get(), kRnd);
+    return mpfr_get_ld(pair_sum.get(), kRnd);
+  };
+  PreciseBalance out;
+  long double total = pair_total();
+  if (!(total > 0)) throw std::invalid_argument("balance_multiprecision: no positive pair force");
+  long double residual = net();
+  out.start_residual = residual / total;
+  // The floor: the working precision's resolution of forces of size ~1 (digits + 10 decimal
+  // digits are carried; the directions are exact to about 10^-digits).
+  const long double floor = std::pow(10.0L, -static_cast<long double>(polish.digits));
+  const int max_sweeps = 4 * (polish.digits + 10) + 20;
+  while (out.sweeps < max_sweeps && residual / total > floor) {
+    const std::vector<long double> yv = solve(rl);
+    if (yv.size() != rl.size()) throw std::logic_error("balance_multiprecision: bad solve size");
+    // f -= W G y: row e of G y is u_e . (y_a - y_b) (a wall's: n . y_a), in MPFR.
+    for (std::size_t e = 0; e < m; ++e) {
+      const Bond& b = bonds[e];
+      const int ca = column(b.a), cb = b.is_wall() ? -1 : column(b.b);
+      if (ca < 0 && cb < 0) continue;
+      mpfr_set_zero(v.get(), 1);
+      for (int side = 0; side < 2; ++side) {
+        const int c = side == 0 ? ca : cb;
+        if (c < 0) continue;
+        const auto cu = static_cast<std::size_t>(c);
+        mpfr_set_ld(t.get(), yv[cu], kRnd);
+        mpfr_mul(t.get(), t.get(), ux[e].get(), kRnd);
+        (side == 0 ? mpfr_add : mpfr_sub)(v.get(), v.get(), t.get(), kRnd);
+        mpfr_set_ld(t.get(), yv[cu + 1], kRnd);
+        mpfr_mul(t.get(), t.get(), uy[e].get(), kRnd);
+        (side == 0 ? mpfr_add : mpfr_sub)(v.get(), v.get(), t.get(), kRnd);
+      }
+      mpfr_mul(v.get(), v.get(), w[e].get(), kRnd);
+      mpfr_sub(f[e].get(), f[e].get(), v.get(), kRnd);
+    }
+    ++out.sweeps;
+    const long double next = net();
+    if (!(next < residual / 2)) {  // no longer halving: the floor of this solve
+      residual = next;
+      break;
+    }
+    residual = next;
+  }
+  // Pair forces summing to 1.
+  total = pair_total();
+  out.forces.resize(m);
+  for (std::size_t e = 0; e < m; ++e) {
+    mpfr_div(f[e].get(), f[e].get(), pair_sum.get(), kRnd);
+    out.forces[e] = mpfr_get_ld(f[e].get(), kRnd);
+  }
+  out.residual = net();
+  out.converged = out.residual <= floor;
+  return out;
 }
 
 }  // namespace tripack

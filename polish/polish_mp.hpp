@@ -12,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -69,5 +70,65 @@ std::string radius_or_side_from_d(const std::string& d, bool radius, int digits)
 // decimal L (a multiprecision polish's), in MPFR, with as many decimals as L has: delta is known to
 // L's absolute accuracy, not to L's number of significant digits.
 std::string oler_delta_from_L(const std::string& L, long long n);
+
+}  // namespace tripack
+
+// Evaluations at a converged polish in MPFR, for the multiprecision certificate
+// (docs/certified.md, "The multiprecision certificate"). Each reads the polish's decimal
+// coordinates and d back at its working precision (digits + 10), so a gap of 1e-11 d is known to
+// ~digits - 11 significant digits where long double coordinates (the long double polish's, off
+// by its residual over the smallest singular value of the bond system) may not even get its
+// sign. Values come back as long double, whose exponent reaches 1e-4931: a gap at 10^-digits is
+// still a number, not 0.
+namespace tripack {
+
+// A non-bond contact and its gap in units of d (pair: |xi - xj|/d - 1; wall: distance / d).
+struct PreciseGap {
+  Bond contact;
+  long double gap = 0;
+  bool rattler = false;  // involves a rattler or a disk without bonds (a cage's play)
+};
+struct PreciseGaps {
+  std::vector<PreciseGap> gaps;  // every non-bond pair closer than 1.25 d and wall closer than
+                                 // 0.25 d, smallest first
+  // The largest |gap| of a bond: what the polish and the decimal coordinates leave of the
+  // equations, measured (~10^-digits). A non-bond gap is resolved only far above it.
+  long double bond_floor = 0;
+};
+// `bonds` need not be sorted. Rattlers (given, or without bonds) are flagged.
+PreciseGaps precise_gaps(const MultiprecisionPolish& polish, const std::vector<Bond>& bonds,
+                         const std::vector<int>& rattlers);
+
+// The polish's coordinates and d rounded to long double (the nearest long double to each).
+Packing rounded_packing(const MultiprecisionPolish& polish);
+
+// The unit contact directions of the bonds computed in MPFR and rounded to long double: a pair
+// bond a-b gives (x_a - x_b)/|x_a - x_b|, a wall bond its inward normal. Each component is within
+// one long double rounding of the exact direction at the polished coordinates, where directions
+// from long double coordinates carry their error divided by d.
+std::vector<Vec2L> precise_directions(const MultiprecisionPolish& polish,
+                                      const std::vector<Bond>& bonds);
+
+// A balancing stress to the working precision: `forces` (one per bond, any balance) are
+// projected onto the self-stresses {f : G^T f = 0} of the polished coordinates (G the
+// bond-opening map over the non-rattlers, its rows the directions above, evaluated in MPFR) by
+// iterative refinement: each sweep evaluates r = G^T f in MPFR, asks `solve` for y with
+// (G^T W G) y = r (in double or long double; W = diag(weights), all ones when empty), and
+// subtracts W G y in MPFR. The columns of r and y are the non-rattlers' x and y in disk order
+// (rattlers have none). The weighted projection changes each force relative to its weight, so
+// weights equal to the forces keep small forces small. Then the forces are scaled so the pair
+// forces sum to 1.
+struct PreciseBalance {
+  std::vector<long double> forces;  // per bond, pair forces summing to 1
+  long double residual = 0;         // largest |G^T f| component at the end, in MPFR
+  long double start_residual = 0;   // the same for the forces given (scaled alike)
+  int sweeps = 0;
+  bool converged = false;  // the residual reached the working precision's floor
+};
+PreciseBalance balance_multiprecision(
+    const MultiprecisionPolish& polish, const std::vector<Bond>& bonds,
+    const std::vector<int>& rattlers, const std::vector<long double>& forces,
+    const std::vector<long double>& weights,
+    const std::function<std::vector<long double>(const std::vector<long double>&)>& solve);
 
 }  // namespace tripack

@@ -1,4 +1,6 @@
 // JSON renderers (conventions in render.hpp).
+#include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -40,8 +42,50 @@ void add_counts(json& j, const Pattern& pattern) {
   j["rattler_indices"] = pattern.rattlers;
 }
 
+// The multiprecision certificate's object (docs/certified.md): null when it did not run.
+json precise_json(const Analysis& a) {
+  if (!a.precise) return nullptr;
+  const auto& p = *a.precise;
+  const auto& id = p.identification;
+  const auto& c = p.certificate;
+  auto number = [](long double v) {
+    return std::isfinite(v) ? json(static_cast<double>(v)) : json(nullptr);
+  };
+  return {{"certified", p.certified},
+          {"reason", p.reason},
+          {"declined", optional_string(p.declined)},
+          {"digits", p.digits},
+          {"deep_relax_steps", p.deep_relaxed ? json(p.deep_relax.iterations) : json(nullptr)},
+          {"deep_relax_d", p.deep_relaxed ? json(decimal17(p.deep_relax.d_end)) : json(nullptr)},
+          {"bonds", id.found ? json(id.bonds.size()) : json(nullptr)},
+          {"rattlers", id.found ? json(id.rattlers.size()) : json(nullptr)},
+          {"contacts", p.contacts > 0 ? json(p.contacts) : json(nullptr)},
+          {"next_gap", p.contacts > 0 ? number(p.next_gap) : json(nullptr)},
+          {"candidates", id.candidates},
+          {"dropped", id.dropped},
+          {"implied", id.implied},
+          {"smallest_gap", id.found ? number(p.smallest_gap) : json(nullptr)},
+          {"gap_floor", id.found ? number(p.gap_floor) : json(nullptr)},
+          {"min_force", c.stress.exists ? number(c.stress.min_force) : json(nullptr)},
+          {"force_error", c.stress.exists ? number(c.force_error) : json(nullptr)},
+          {"balance_residual", c.stress.exists ? number(c.stress.residual) : json(nullptr)},
+          {"min_eigenvalue", id.found ? number(c.min_eigenvalue) : json(nullptr)},
+          {"eigenvalue_error", id.found ? number(c.eigenvalue_error) : json(nullptr)},
+          {"reference_open", p.reference_open >= 0 ? json(p.reference_open) : json(nullptr)},
+          {"seconds", p.seconds}};
+}
+
 json certificate_json(const Analysis& a) {
+  long double smallest_gap = std::numeric_limits<long double>::infinity();
+  for (const auto& g : a.gaps)
+    if (!g.rattler) {
+      smallest_gap = g.gap;
+      break;
+    }
   return {{"rigid", a.rigidity.rigid},
+          {"smallest_gap",
+           std::isfinite(smallest_gap) ? json(static_cast<double>(smallest_gap)) : json(nullptr)},
+          {"multiprecision", precise_json(a)},
           {"stress_exists", a.stress.exists},
           {"stress_strictly_positive", a.stress.strictly_positive},
           {"min_force", static_cast<double>(a.stress.min_force)},
@@ -61,7 +105,8 @@ json analysis_stage_seconds(const Analysis& a) {
           {"bonds", a.times.bonds},
           {"rigidity", a.times.rigidity},
           {"stress", a.times.stress},
-          {"multiprecision", a.times.multiprecision}};
+          {"multiprecision", a.times.multiprecision},
+          {"multiprecision_certificate", a.times.certificate_mp}};
 }
 
 json member_json(const Provenance& m) {

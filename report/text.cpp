@@ -110,6 +110,56 @@ void near_contacts(std::ostream& out, const Analysis& a) {
   if (play) line(out, "play", fmt::format("smallest rattler gap {:.6Lg} d", play->gap));
 }
 
+std::string contact_name(const Bond& b) {
+  return b.is_wall() ? fmt::format("{}-{}", b.a, side_name(b.side()))
+                     : fmt::format("{}-{}", b.a, b.b);
+}
+
+// The multiprecision certificate (docs/certified.md): why it ran, the bonds it identified, and
+// the margins it resolved, each beside the error it was measured against.
+void precise_lines(std::ostream& out, const PreciseStage& p) {
+  const auto& id = p.identification;
+  line(out, "mp why", p.reason);
+  if (p.deep_relaxed)
+    line(out, "mp relax",
+         fmt::format(
+             "deep relax: {} LP steps to a gain below 1e-18, d {:.19Lg} -> {:.19Lg} ({:.3f} s)",
+             p.deep_relax.iterations, p.deep_relax.d_start, p.deep_relax.d_end,
+             p.deep_relax_seconds));
+  line(out, "mp bonds",
+       id.found ? fmt::format("{} digits: {} bonds, {} rattlers ({} candidates within 1e-6 d, {} "
+                              "dropped, {} implied contacts added, {} polishes)",
+                              p.digits, id.bonds.size(), id.rattlers.size(), id.candidates,
+                              id.dropped, id.implied, id.polishes)
+                : fmt::format("{} digits: none identified ({})", p.digits, id.failure));
+  if (id.found) {
+    const auto& c = p.certificate;
+    line(out, "mp gap",
+         std::isfinite(p.smallest_gap)
+             ? fmt::format("smallest non-bond gap {:.6Lg} d ({}), precision floor {:.2Lg} d",
+                           p.smallest_gap, contact_name(p.smallest_gap_contact), p.gap_floor)
+             : fmt::format("no non-bond gap between held disks; precision floor {:.2Lg} d",
+                           p.gap_floor));
+    line(out, "mp rigid",
+         c.eigenvalue_estimate > 0
+             ? fmt::format("lambda_min(G^T G) >= {:.3Lg} (estimate {:.3Lg}, error {:.2Lg}){}",
+                           c.min_eigenvalue, c.eigenvalue_estimate, c.eigenvalue_error,
+                           c.rigid ? "" : ": not resolved")
+             : c.declined);
+    if (c.stress.exists)
+      line(out, "mp stress",
+           fmt::format("min force {:.6Lg} (pairs {:.6Lg}, walls {:.6Lg}), error <= {:.2Lg}, "
+                       "balance residual {:.2Lg} ({}{}, {} sweeps)",
+                       c.stress.min_force, c.stress.min_pair_force,
+                       std::isfinite(c.stress.min_wall_force) ? c.stress.min_wall_force : 0.0L,
+                       c.force_error, c.stress.residual, c.stress_start,
+                       c.weighted ? ", weighted" : "", c.balance_sweeps));
+  }
+  line(out, "mp time",
+       fmt::format("{:.3f} s{}", p.seconds,
+                   p.attempts > 1 ? ", second attempt at twice the digits" : ""));
+}
+
 void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
   line(out, "analysis",
        fmt::format(
@@ -154,6 +204,7 @@ void analysis_lines(std::ostream& out, const Analysis& a, bool stage_times) {
   else
     line(out, "stress", "none");
   line(out, "verdict", a.status());
+  if (a.precise) precise_lines(out, *a.precise);
   near_contacts(out, a);
   if (a.multiprecision)
     line(out, "mpfr",
@@ -193,10 +244,24 @@ void build_lines(std::ostream& out, const BuildResult& b) {
                      b.exact->ok ? "verified" : "FAILED: " + b.exact->failure,
                      b.exact->bonds_checked, b.exact->gaps_checked));
   if (b.analysis) {
-    line(out, "certify",
-         fmt::format("bonds from geometry {} the builder's, rattlers {}",
-                     b.bonds_match() ? "equal" : "DIFFER from",
-                     b.rattlers_match() ? "equal" : "DIFFER"));
+    const auto& precise = b.analysis->precise;
+    if (precise && precise->certified) {
+      const auto& geometry = b.analysis->pattern.bonds;
+      std::size_t beyond = 0;  // contacts of the certified configuration the builder did not list
+      for (const Bond& g : geometry)
+        beyond += !std::binary_search(b.pattern.bonds.begin(), b.pattern.bonds.end(), g);
+      line(out, "certify",
+           fmt::format("bonds from geometry (multiprecision, {} digits) {}: {} of the builder's "
+                       "{} open, {} contacts beyond its list; rattlers {}",
+                       precise->digits,
+                       b.bonds_match() ? "equal the builder's" : "trusted over the builder's",
+                       precise->reference_open, b.pattern.bonds.size(), beyond,
+                       b.rattlers_match() ? "equal" : "DIFFER"));
+    } else
+      line(out, "certify",
+           fmt::format("bonds from geometry {} the builder's, rattlers {}",
+                       b.bonds_match() ? "equal" : "DIFFER from",
+                       b.rattlers_match() ? "equal" : "DIFFER"));
     analysis_lines(out, *b.analysis, false);
   } else if (b.certify_skipped) {
     line(out, "certify",
