@@ -240,7 +240,7 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
   long double t = 0;
   for (const auto& term : near_terms(s, L))
     if (!term.wall()) t += 1 / slack(term, s, L);
-  Cholesky cholesky(2 * static_cast<Eigen::Index>(n));
+  Cholesky cholesky(opt.supernodal ? kSupernodalFrom : 2 * static_cast<Eigen::Index>(n));
   std::vector<Term> last_terms;
   for (; rep.newton_steps < opt.max_newton_steps; t *= opt.t_factor) {
     ++rep.stages;

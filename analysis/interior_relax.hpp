@@ -34,6 +34,11 @@ struct InteriorRelaxOptions {
   // The first stage's limit: from a start far from the maximum (a lattice with a long vacancy
   // segment, whose disks travel several spacings) it is the journey, not a stall.
   int max_first_stage_steps = 80;
+  // CHOLMOD's supernodal Cholesky at any n (by default Eigen's simplicial one below 50,000
+  // disks, 2x faster there). On a degenerate maximum the relax's end depends on the
+  // factorization's rounding: the vacancy-segment enumeration keeps the supernodal one, with
+  // which n = 188's end is certified (with the simplicial one its bonds are not identified).
+  bool supernodal = false;
   // Called after every Newton step with its number and the current lower bound D on d.
   std::function<void(int step, long double D)> on_step;
 };

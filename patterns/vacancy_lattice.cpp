@@ -42,9 +42,11 @@ Site permuted(long rows, const Site& s, int symmetry) {
 // (docs/performance.md). The report is then empty.
 constexpr std::size_t kLpRelaxLimit = 1000;
 RelaxReport relax_near_lattice(Packing& p) {
-  InteriorRelaxReport report = interior_relax(p);
+  InteriorRelaxOptions options;
+  options.supernodal = true;  // as the enumeration always relaxed (InteriorRelaxOptions)
+  InteriorRelaxReport report = interior_relax(p, options);
   if (p.size() < kLpRelaxLimit) return relax_packing(p);
-  for (int again = 0; again < 3 && !report.converged; ++again) report = interior_relax(p);
+  for (int again = 0; again < 3 && !report.converged; ++again) report = interior_relax(p, options);
   return {};
 }
 
