@@ -411,11 +411,17 @@ void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
     st.declined = fmt::format(
         "{} contacts within {:.2Lg} d (the next gap {:.2Lg} d){}; {}", st.contacts, st.contact_gap,
         st.next_gap,
-        st.deep_relax.converged ? ", first-order stationary (no LP step gains 1e-18)" : "",
-        held.empty() ? "with them every disk is a rattler by the surround test: not jammed at "
-                       "first order (a degenerate maximum no first-order certificate covers)"
-                     : fmt::format("with them {} rattlers, but no bond set with a solution: {}",
-                                   rattlers.size(), st.identification.failure));
+        st.deep_relax.converged ? ", first-order stationary (no LP step gains 1e-18)"
+        : st.deep_relaxed       ? ""
+                                : fmt::format(" (no deep relax above {} disks)", o.lp_limit),
+        held.empty()
+            ? std::string("with them every disk is a rattler by the surround test: not jammed "
+                          "at first order") +
+                  (st.deep_relax.converged
+                       ? " (a degenerate maximum no first-order certificate covers)"
+                       : "")
+            : fmt::format("with them {} rattlers, but no bond set with a solution: {}",
+                          rattlers.size(), st.identification.failure));
   }
 
   if (st.certified) {
