@@ -35,7 +35,8 @@ void expect_resolved(const pipeline::Analysis& a, const char* what) {
   EXPECT_GE(p.digits, 40);
   EXPECT_LE(p.digits, 58);
   // The bonds close to the working precision: their largest |gap| (measured in MPFR) is at the
-  // 10^-digits floor (10^-digits over d = 1/17 or 1/18, so 18 x 10^-digits; 100x for the last digits).
+  // 10^-digits floor (10^-digits over d = 1/17 or 1/18, so 18 x 10^-digits; 100x for the last
+  // digits).
   EXPECT_LT(p.identification.gaps.bond_floor, 100 * std::pow(10.0L, -p.digits)) << what;
   // The smallest non-bond gap is open by far more than the floor: 20 orders (the stage demands
   // half the digits, > 20 orders at 40+ digits).
