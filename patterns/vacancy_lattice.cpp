@@ -177,18 +177,23 @@ void relax_interior(Packing& p) {
 
 // The LP relax from the interior relax's end (1 to 4 LP steps there) and the bonds.
 constexpr std::size_t kFastLpRelaxLimit = 5000;
-Pattern finish_relaxed(Packing p) {
-  RelaxReport lp;
-  if (p.size() < kFastLpRelaxLimit)
-    lp = relax_packing(p);
-  else
-    relax_interior(p);
+// A relaxed packing with its bonds, identified from the relax's loaded contacts.
+Pattern with_bonds(Packing p, const RelaxReport& lp) {
   BondIdentification id = identify_bonds(p, lp.active);
   Pattern out;
   out.packing = std::move(p);
   out.bonds = std::move(id.bonds);
   out.rattlers = std::move(id.rattlers);
   return out;
+}
+
+Pattern finish_relaxed(Packing p) {
+  RelaxReport lp;
+  if (p.size() < kFastLpRelaxLimit)
+    lp = relax_packing(p);
+  else
+    relax_interior(p);
+  return with_bonds(std::move(p), lp);
 }
 
 // How many lattice lines lie between the segment and the nearest wall (0: it touches one).
@@ -345,12 +350,7 @@ Pattern relax_to_pattern(const Packing& start, bool exhaustive) {
   }
   Packing p = start;
   const RelaxReport lp = relax_near_lattice(p);
-  BondIdentification id = identify_bonds(p, lp.active);
-  Pattern out;
-  out.packing = std::move(p);
-  out.bonds = std::move(id.bonds);
-  out.rattlers = std::move(id.rattlers);
-  return out;
+  return with_bonds(std::move(p), lp);
 }
 
 }  // namespace tripack::patterns
