@@ -12,7 +12,8 @@
 \\  * The certificate is DATA. It is read with readstr() and parsed by the tokenizer and
 \\    recursive-descent parser below (grammar in checker/README.md); nothing of it is eval'ed
 \\    except digit-only strings (integer literals). Anything outside the grammar is "FAIL read".
-\\  * Every element of K is reduced mod K (lift(Mod(e, K)), degree < deg K) before it is used.
+\\  * Every element of K is reduced mod K (its remainder on division by K, degree < deg K) before it
+\\    is used; an identity "A = 0 in K" is decided by that exact remainder.
 \\  * Every sign is decided exactly: A reduced, A == 0 exactly, or else A(t0) != 0 (K is
 \\    irreducible) and its sign comes from an exact rational enclosure of A(t0) on a rational
 \\    interval containing t0, refined until the enclosure excludes 0. No floating-point number
@@ -259,7 +260,41 @@ ck_finish() =
 \\ no other root of K (polsturm); refined by ck_refine. ck_lev: Map p -> [lo, hi], lo and hi
 \\ multiples of 2^-p with lo <= t0 <= hi and hi - lo <= 3 * 2^-p (the level-p interval).
 
-ck_K = 0; ck_iso = 0; ck_lev = Map(); ck_pmax = 2^18; ck_maxlevel = 0;
+ck_K = 0; ck_Kz = 0; ck_iso = 0; ck_lev = Map(); ck_pmax = 2^18; ck_maxlevel = 0;
+
+\\ Arithmetic in K = Q[t]/(K) is done on polynomials with rational coefficients, split as
+\\ content * primitive integer polynomial: GP's t_POLMOD arithmetic on rational coefficients
+\\ spends a gcd on every coefficient product and divides by K in rationals, about 75 times slower
+\\ on a degree-56 field (checker/README.md, "Cost"). ck_Kz = K / content(K) has the same
+\\ remainders as K.
+
+\\ [c, Z]: a = c * Z with c rational and Z a primitive integer polynomial (or [a, 1], [0, 0])
+ck_cz(a) = if(a == 0, [0, 0], type(a) != "t_POL", [a, 1], my(c = content(a)); [c, a / c]);
+
+\\ the remainder of a in Q[t] on division by K (exact)
+ck_rem(a) =
+{
+  my(c);
+  if(type(a) != "t_POL" || poldegree(a) < poldegree(ck_Kz), return(a));
+  c = content(a);
+  c * ((a / c) % ck_Kz);
+}
+
+\\ sum_k L[k][1] * L[k][2] for elements of K (unreduced), as [D, S]: the sum is S / D with S an
+\\ integer polynomial and D a positive integer. Products of primitive integer polynomials and
+\\ one common denominator keep every coefficient operation on integers.
+ck_comb(L) =
+{
+  my(T = vector(#L, k, my(u = ck_cz(L[k][1]), v = ck_cz(L[k][2])); [u[1] * v[1], u[2] * v[2]]), D = 1);
+  foreach(T, u, D = lcm(D, denominator(u[1])));
+  [D, sum(k = 1, #T, (T[k][1] * D) * T[k][2])];
+}
+
+\\ sum_k L[k][1] * L[k][2] == 0 in K, exactly
+ck_comb_is_zero(L) = my(S = ck_comb(L)[2]); if(S == 0, 1, type(S) != "t_POL", 0, (S / content(S)) % ck_Kz == 0);
+
+\\ the canonical representative of sum_k L[k][1] * L[k][2] (see ck_red)
+ck_comb_red(L) = my(S = ck_comb(L)); ck_red(ck_rem(S[2]) / S[1]);
 
 \\ the canonical representative of an element of K: a rational, or a polynomial in t of degree
 \\ 1 .. deg K - 1
@@ -267,7 +302,7 @@ ck_red(e) =
 {
   my(r);
   if(type(e) != "t_POL" && type(e) != "t_POLMOD", return(e));
-  r = if(type(e) == "t_POLMOD", lift(e), lift(Mod(e, ck_K)));
+  r = if(type(e) == "t_POLMOD", lift(e), ck_rem(e));
   if(type(r) == "t_POL" && poldegree(r) <= 0, polcoef(r, 0), r);
 }
 ck_Ksign(q) = sign(subst(ck_K, 't, q));
@@ -626,22 +661,24 @@ ck_check_K() =
       Str(s, " real roots of K in [t_low, t_high] (polsturm, closed interval; need exactly 1)"))]));
   ck_ok_K = (ck_nfail == f0);
   if(ck_ok_K,
-    ck_K = c_K;
+    ck_K = c_K; ck_Kz = c_K / content(c_K);
     ck_iso = if(poldegree(c_K) == 1, my(t0 = -polcoef(c_K, 0) / polcoef(c_K, 1)); [t0, t0], [c_tlow, c_thigh]);
     \\ the reduced (canonical) representatives of everything in K, used from here on
-    r_d = ck_red(c_d); r_d2 = ck_red(Mod(c_d, ck_K)^2); r_s3 = ck_red(c_s3);
+    r_d = ck_red(c_d); r_d2 = ck_comb_red([[c_d, c_d]]); r_s3 = ck_red(c_s3);
     r_X = vector(c_n, i, ck_red(c_points[i][1])); r_Y = vector(c_n, i, ck_red(c_points[i][2])));
 }
 
 \\ --- exact identities in K -----------------------------------------------------------------------
 
 ck_ok_ids = 0;
+\\ p(a) reduced mod K for p in Q[x] and a in K: Horner, reducing after every step
+ck_horner(p, a) = my(h = pollead(p)); forstep(k = poldegree(p) - 1, 0, -1, h = ck_comb_red([[h, a], [polcoef(p, k), 1]])); h;
 ck_check_identities() =
 {
   my(f0 = ck_nfail);
   if(!ck_ok_K, foreach(["d-identity", "sqrt3-identity"], s, ck_skip(s, "K failed")); return(0));
-  ck_run("d-identity", () -> my(r = subst(c_P, 'x, Mod(r_d, ck_K))); [r == 0, if(r == 0, "P(d_in_K) = 0 in Q[t]/(K)", Str("P(d_in_K) = ", ck_short(lift(r)), " mod K, not 0"))]);
-  ck_run("sqrt3-identity", () -> my(r = Mod(r_s3, ck_K)^2 - 3); [r == 0, if(r == 0, "sqrt3_in_K^2 = 3 in Q[t]/(K)", Str("sqrt3_in_K^2 - 3 = ", ck_short(lift(r)), " mod K, not 0"))]);
+  ck_run("d-identity", () -> my(r = ck_horner(c_P, r_d)); [r == 0, if(r == 0, "P(d_in_K) = 0 in Q[t]/(K)", Str("P(d_in_K) = ", ck_short(r), " mod K, not 0"))]);
+  ck_run("sqrt3-identity", () -> my(r = ck_comb_red([[r_s3, r_s3], [-3, 1]])); [r == 0, if(r == 0, "sqrt3_in_K^2 = 3 in Q[t]/(K)", Str("sqrt3_in_K^2 - 3 = ", ck_short(r), " mod K, not 0"))]);
   ck_ok_ids = (ck_nfail == f0);
 }
 
@@ -669,11 +706,11 @@ ck_check_embedding() =
 
 ck_bond_ok(b) =
 {
-  my(i = b[1], j = b[2], x1 = Mod(r_X[i], ck_K), y1 = Mod(r_Y[i], ck_K), s3 = Mod(r_s3, ck_K));
-  if(j > 0, (x1 - r_X[j])^2 + (y1 - r_Y[j])^2 - Mod(r_d2, ck_K) == 0,
-     j == -1, y1 == 0,
-     j == -2, s3 * x1 - y1 == 0,
-     s3 * (1 - x1) - y1 == 0);
+  my(i = b[1], j = b[2], x = r_X[i], y = r_Y[i]);
+  if(j > 0, my(dx = x - r_X[j], dy = y - r_Y[j]); ck_comb_is_zero([[dx, dx], [dy, dy], [-1, r_d2]]),
+     j == -1, y == 0,
+     j == -2, ck_comb_is_zero([[r_s3, x], [-1, y]]),
+     ck_comb_is_zero([[r_s3, 1 - x], [-1, y]]));
 }
 
 ck_check_bonds() =
@@ -751,7 +788,8 @@ ck_check_separation() =
   foreach(todo, q,
     my(i = q[1], j = q[2], A, s);
     nex++;
-    A = ck_red((Mod(r_X[i], ck_K) - r_X[j])^2 + (Mod(r_Y[i], ck_K) - r_Y[j])^2 - r_d2);
+    my(dx = r_X[i] - r_X[j], dy = r_Y[i] - r_Y[j]);
+    A = ck_comb_red([[dx, dx], [dy, dy], [-1, r_d2]]);
     if(A == 0, listput(zero, q); next);
     s = ck_sign2(A);
     if(s[1] < 0, listput(bad, q), if(s[2] < best, best = s[2]; bw = q)));
@@ -767,8 +805,8 @@ ck_check_separation() =
 \\ it (bond-identities); every other point-wall quantity must be > 0.
 ck_wall_exact(i, w) =
 {
-  my(x = Mod(r_X[i], ck_K), y = Mod(r_Y[i], ck_K), s3 = Mod(r_s3, ck_K));
-  ck_red(if(w == 1, y, w == 2, s3 * x - y, s3 * (1 - x) - y));
+  my(x = r_X[i], y = r_Y[i]);
+  if(w == 1, y, w == 2, ck_comb_red([[r_s3, x], [-1, y]]), ck_comb_red([[r_s3, 1 - x], [-1, y]]));
 }
 
 ck_check_walls() =
@@ -858,12 +896,17 @@ ck_check_stress_format() =
       Str(#c_stress, " entries, one per bond, in K")));
 }
 
+\\ G^T f, one entry per column of G, from G's nonzero entries only (at most 4 per bond, where the
+\\ dense product would multiply every zero of G as a t_POLMOD)
 ck_check_balance(H, G) =
 {
-  my(f = Col(vector(#ck_r_stress, b, Mod(ck_r_stress[b], ck_K))), r = G~ * f, bad = [k | k <- [1 .. #r], r[k] != 0]);
+  my(sz = matsize(G), T = vector(sz[2], k, List()), r, bad);
+  for(b = 1, sz[1], for(k = 1, sz[2], my(g = G[b, k]); if(g != 0, listput(T[k], [lift(g), ck_r_stress[b]]))));
+  r = vector(sz[2], k, ck_comb_red(Vec(T[k])));
+  bad = [k | k <- [1 .. #r], r[k] != 0];
   ck_report(#bad == 0, "stress-balance",
     if(#bad, Str(#bad, " of ", #r, " equations of G^T stress = 0 fail in Q[t]/(K), first at point ", H[(bad[1] + 1) \ 2],
-        if(bad[1] % 2, " (x)", " (y)"), ": ", ck_short(lift(r[bad[1]])), " mod K"),
+        if(bad[1] % 2, " (x)", " (y)"), ": ", ck_short(r[bad[1]]), " mod K"),
       Str("G^T stress = 0 exactly in Q[t]/(K): ", #r, " equations (x and y of ", #H, " held disks), ", #ck_r_stress, " bonds")));
 }
 
