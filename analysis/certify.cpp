@@ -10,6 +10,7 @@
 #include <string>
 
 #include "analysis/linear_program.hpp"
+#include "analysis/openmp_regions.hpp"
 #include "polish/polish_mp.hpp"
 
 namespace tripack {
@@ -206,6 +207,7 @@ using Cholesky = Eigen::CholmodSupernodalLLT<SpMat>;
 // warning for CHOLMOD to print on stderr.
 void quiet(Cholesky& c) {
   c.cholmod().print = 0;
+  run_openmp_regions_on_this_thread();
 }
 
 // A strictly positive self-stress, if one exists, by infeasible-start Newton on the analytic

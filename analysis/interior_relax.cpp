@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "analysis/openmp_regions.hpp"
 #include "core/neighbours.hpp"
 
 namespace tripack {
@@ -91,7 +92,9 @@ struct NewtonStep {
 constexpr Eigen::Index kSupernodalFrom = 2 * 50000;  // unknowns
 class Cholesky {
  public:
-  explicit Cholesky(Eigen::Index unknowns) : supernodal_(unknowns >= kSupernodalFrom) {}
+  explicit Cholesky(Eigen::Index unknowns) : supernodal_(unknowns >= kSupernodalFrom) {
+    if (supernodal_) run_openmp_regions_on_this_thread();
+  }
   void analyzePattern(const SpMat& K) {
     if (supernodal_)
       supernodal_llt_.analyzePattern(K);

@@ -7,4 +7,3 @@
 set_tests_properties(Atlas.NoBuilderBeatsTheCommittedAtlas PROPERTIES COST 400)
 set_tests_properties(Classes.EveryBuilderIsValidAndMatchesTheCatalogueUpToK12 PROPERTIES COST 100)
 set_tests_properties(VacancySegment.CertifiesAMemberAboveTheLpRelaxLimit PROPERTIES COST 60)
-set_tests_properties(Accuracy.HardCasesAreStableReproduceThePaperAndKeepTheOrderOf33 PROPERTIES COST 60)
