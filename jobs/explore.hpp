@@ -50,7 +50,7 @@ struct ExploreSettings {
     o.option("--billiards-max-n", billiards_max_n, "search every n = 2 .. this").range(2, 100000);
     o.option("--threads", threads, "parallel runs").range(1, 256);
     o.option("--seed", seed, "seed of run 0 (run r uses seed + r)");
-    o.flag("!--no-accuracy", accuracy, "skip the accuracy-against-time study (~20 s)");
+    o.flag("!--no-accuracy", accuracy, "skip the accuracy-against-time study (~50 s)");
   }
 };
 
