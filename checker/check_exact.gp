@@ -62,6 +62,22 @@ ck_lexerr(line, msg) = error(Str("line ", line, ": ", msg));
 ck_cdig = Vecsmall(vector(256, k, (k - 1) >= 48 && (k - 1) <= 57));
 ck_calnum = Vecsmall(vector(256, k, ck_isalnum(k - 1)));
 
+\\ the first position >= j of s (a Vecsmall of N bytes and a 0 sentinel) that is not a digit.
+\\ A certificate is almost all digits (t62a.gp: 49 MB, 1 byte in 500 not a digit), so whole
+\\ blocks are tested with vecmin/vecmax (one gp call each, however long), the block doubling
+\\ while it is all digits and halving once it is not; only the last < 16 bytes one at a time.
+ck_digits_end(s, N, j) =
+{
+  my(B = 16, e, grow = 1);
+  while(B >= 16,
+    e = min(j + B - 1, N);
+    if(e >= j && vecmin(s[j .. e]) >= 48 && vecmax(s[j .. e]) <= 57,
+      j = e + 1; if(grow, B *= 2),
+      grow = 0; B \= 2));
+  while(s[j] >= 48 && s[j] <= 57, j++);
+  j;
+}
+
 ck_lex(s0) =
 {
   my(N = #s0, s = concat(s0, Vecsmall([0])), D = ck_cdig, A = ck_calnum, i = 1, j, c, line = 1, depth = 0, tk = List(), tv = List(), tl = List());
@@ -71,7 +87,7 @@ ck_lex(s0) =
     if(c == 32 || c == 9 || c == 13, i++; next);
     if(c == 10, if(depth == 0, listput(tk, 1004); listput(tv, 0); listput(tl, line)); line++; i++; next);
     if(c >= 48 && c <= 57,                                        \\ integer literal
-      j = i + 1; while(D[s[j] + 1], j++);
+      j = ck_digits_end(s, N, i + 1);
       if(j <= N && (ck_isalpha(s[j]) || s[j] == 46),
         ck_lexerr(line, "malformed number (only integer literals: no '.', exponent letter or suffix)"));
       listput(tk, 1001); listput(tv, eval(Strchr(s[i .. j - 1]))); listput(tl, line); i = j; next);
