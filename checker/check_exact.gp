@@ -58,8 +58,7 @@ ck_isalnum(c) = (c >= 48 && c <= 57) || (c >= 65 && c <= 90) || (c >= 97 && c <=
 ck_errmsg(E) = if(errname(E) == "e_USER", my(v = component(E, 1)); if(type(v) == "t_VEC" && #v == 1, Str(v[1]), Str(v)), Str(E));
 ck_lexerr(line, msg) = error(Str("line ", line, ": ", msg));
 
-\\ character classes (index: code + 1): digits; letters, digits and _
-ck_cdig = Vecsmall(vector(256, k, (k - 1) >= 48 && (k - 1) <= 57));
+\\ character class (index: code + 1): letters, digits and _
 ck_calnum = Vecsmall(vector(256, k, ck_isalnum(k - 1)));
 
 \\ the first position >= j of s (a Vecsmall of N bytes and a 0 sentinel) that is not a digit.
@@ -80,7 +79,7 @@ ck_digits_end(s, N, j) =
 
 ck_lex(s0) =
 {
-  my(N = #s0, s = concat(s0, Vecsmall([0])), D = ck_cdig, A = ck_calnum, i = 1, j, c, line = 1, depth = 0, tk = List(), tv = List(), tl = List());
+  my(N = #s0, s = concat(s0, Vecsmall([0])), A = ck_calnum, i = 1, j, c, line = 1, depth = 0, tk = List(), tv = List(), tl = List());
   \\ s ends with a 0 sentinel (class "other"), so the digit and identifier loops need no bound test
   while(i <= N,
     c = s[i];
@@ -305,9 +304,6 @@ ck_comb(L) =
   foreach(T, u, D = lcm(D, denominator(u[1])));
   [D, sum(k = 1, #T, (T[k][1] * D) * T[k][2])];
 }
-
-\\ sum_k L[k][1] * L[k][2] == 0 in K, exactly
-ck_comb_is_zero(L) = my(S = ck_comb(L)[2]); if(S == 0, 1, type(S) != "t_POL", 0, (S / content(S)) % ck_Kz == 0);
 
 \\ the canonical representative of sum_k L[k][1] * L[k][2] (see ck_red)
 ck_comb_red(L) = my(S = ck_comb(L)); ck_red(ck_rem(S[2]) / S[1]);
@@ -723,10 +719,10 @@ ck_check_embedding() =
 ck_bond_ok(b) =
 {
   my(i = b[1], j = b[2], x = r_X[i], y = r_Y[i]);
-  if(j > 0, my(dx = x - r_X[j], dy = y - r_Y[j]); ck_comb_is_zero([[dx, dx], [dy, dy], [-1, r_d2]]),
+  if(j > 0, my(dx = x - r_X[j], dy = y - r_Y[j]); ck_comb_red([[dx, dx], [dy, dy], [-1, r_d2]]) == 0,
      j == -1, y == 0,
-     j == -2, ck_comb_is_zero([[r_s3, x], [-1, y]]),
-     ck_comb_is_zero([[r_s3, 1 - x], [-1, y]]));
+     j == -2, ck_comb_red([[r_s3, x], [-1, y]]) == 0,
+     ck_comb_red([[r_s3, 1 - x], [-1, y]]) == 0);
 }
 
 ck_check_bonds() =
