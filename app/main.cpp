@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "commands/command.hpp"
+#include "commands/common.hpp"
 #include "commands/help.hpp"
 #include "core/option_values.hpp"
 
@@ -119,13 +120,13 @@ int fail(const std::string& message, bool json, int code) {
 // third ends the program at once (docs/cli.md, "Ctrl-C").
 constexpr std::chrono::milliseconds kSameSignal{1000};
 
-void cancel_on_signals(CancelToken& cancel) {
+void cancel_on_signals(CancelToken& cancel, const char* one_item_lost) {
   sigset_t signals;
   sigemptyset(&signals);
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
-  std::thread([signals, &cancel] {
+  std::thread([signals, &cancel, one_item_lost] {
     // A person at a terminal sees the first request acknowledged at once (the progress line
     // ended first); a log gets only the job's one closing line ("tripack: cancelled: ...").
     const bool terminal = isatty(STDERR_FILENO);
@@ -143,6 +144,15 @@ void cancel_on_signals(CancelToken& cancel) {
         cancel.cancel();
         if (terminal)
           std::cerr << "\ntripack: stopping after the items under way (again to stop at once)\n";
+        // A one-item job inside a long library call (no check for minutes) ends here after the
+        // grace time, with the closing line it would have written; nothing of it is kept anyway.
+        if (one_item_lost)
+          std::thread([&cancel, one_item_lost, fresh_line] {
+            std::this_thread::sleep_for(commands::kOneItemGrace);
+            if (!cancel.claim_ending()) return;
+            std::cerr << fresh_line;
+            std::_Exit(commands::cancelled(one_item_lost));
+          }).detach();
       } else if (counted == 2) {
         cancel.abandon();
         std::cerr << fresh_line
@@ -207,7 +217,7 @@ int main(int argc, char** argv) {
     for (auto& b : bound) {
       if (!*b.app) continue;
       if (b.entry->long_job) {
-        cancel_on_signals(cancel);
+        cancel_on_signals(cancel, b.entry->one_item_lost);
         context.cancel = &cancel;
       }
       return b.command->run(context);

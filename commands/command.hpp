@@ -4,6 +4,7 @@
 // dispatches.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -29,25 +30,33 @@ class Command {
 };
 
 inline constexpr int kCancelledExit = 130;
+// How long a one-item job (CommandInfo::one_item_lost) has after the first request to reach a
+// check before the signal thread ends it: a check is reached well within it between relaxes.
+inline constexpr std::chrono::milliseconds kOneItemGrace{2000};
 
 // What the help shows of a command, and whether it is a long job: each command class's kInfo.
 struct CommandInfo {
   const char* name;  // "build"; "db export" is the subcommand export of the group db
   const char* summary;
   bool long_job;
+  // A long job that is one item (nothing finished to keep until it ends): what its closing line
+  // says was lost. The first request then ends it within kOneItemGrace even inside a library call.
+  const char* one_item_lost = nullptr;
 };
 
 struct CommandEntry {
   std::string name;
   std::string summary;
   bool long_job = false;
+  const char* one_item_lost = nullptr;
   std::function<std::unique_ptr<Command>()> make;
 };
 
 // A command class's entry in the table: its kInfo and its factory.
 template <class C>
 CommandEntry entry() {
-  return {C::kInfo.name, C::kInfo.summary, C::kInfo.long_job, [] { return std::make_unique<C>(); }};
+  return {C::kInfo.name, C::kInfo.summary, C::kInfo.long_job, C::kInfo.one_item_lost,
+          [] { return std::make_unique<C>(); }};
 }
 
 // Every command, in the order the help lists them.

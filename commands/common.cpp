@@ -2,8 +2,10 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
 
 #include "core/io.hpp"
 #include "report/diagram.hpp"
@@ -67,6 +69,11 @@ report::ProgressLineOptions job_line(std::string job, long long log_every) {
 int cancelled(const std::string& what) {
   std::cerr << "tripack: cancelled: interrupted; " << what << "\n";
   return kCancelledExit;
+}
+
+void claim_ending(const Context& context) {
+  if (!context.cancel || context.cancel->claim_ending()) return;
+  for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
 }
 
 std::string tool_version() {

@@ -98,6 +98,9 @@ report::ProgressLineOptions job_line(std::string job, long long log_every);
 // How every cancelled long job ends: one line "tripack: cancelled: interrupted; WHAT" on stderr
 // and exit kCancelledExit.
 int cancelled(const std::string& what);
+// A one-item job's computation has ended (CommandInfo::one_item_lost): claims the ending, or, when
+// the signal thread has claimed it, waits for that thread to end the process (it writes nothing).
+void claim_ending(const Context& context);
 
 // "tripack VERSION": what the database records as the tool of a run.
 std::string tool_version();

@@ -33,7 +33,8 @@ void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
 
 class Build : public Command {
  public:
-  static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member", true};
+  static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member", true,
+                                     "nothing was built"};
 
  private:
   BuildRequest member{"", kUnsetK, 0, ""};
@@ -70,10 +71,14 @@ class Build : public Command {
         result.best = pipeline::build_and_certify(catalogue, member, settings);
       }
     } catch (const Cancelled&) {
+      claim_ending(c);
       progress.finish();
-      return cancelled("nothing was built");
+      return cancelled(kInfo.one_item_lost);
     }
+    claim_ending(c);
     progress.finish();
+    // A request that came after the last check: the build stops as if it had reached one.
+    if (c.cancel && c.cancel->cancelled()) return cancelled(kInfo.one_item_lost);
     print_result(result, out);
     const PackingRecord& built = result.best.record;
     if (!output.empty()) write_packing_file(output, built, file_digits(settings.digits));

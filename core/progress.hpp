@@ -56,9 +56,15 @@ class CancelToken {
   void abandon() { level_.store(2); }
   bool cancelled() const { return level_.load() >= 1; }
   bool abandoned() const { return level_.load() >= 2; }
+  // A job that is one item (a build) may sit in one library call for minutes (a sparse QR of 10^6
+  // disks) with no check: the signal thread ends it after a grace time (app/main.cpp). The job
+  // and that thread claim the ending once; the job claims it when its computation ends, before it
+  // writes anything, so it is never ended halfway through its output.
+  bool claim_ending() const { return !ending_claimed_.exchange(true); }
 
  private:
   std::atomic<int> level_{0};
+  mutable std::atomic<bool> ending_claimed_{false};  // claimable by the jobs, which hold it const
 };
 
 // Thrown by an item under way that gives up on an abandoned token; the runner drops the item (it

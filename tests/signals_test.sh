@@ -65,6 +65,12 @@ timeout --preserve-status -s INT 3 "$TRIPACK" build --n 298 >"$tmp/build.out" 2>
 rc=$?
 check "build --n 298 under timeout -s INT 3: rc 130 ($rc), one line" \
   bash -c "[ $rc -eq 130 ] && [ \$(wc -l <'$tmp/build.err') -eq 1 ] && grep -q 'nothing was built' '$tmp/build.err'"
+# Inside a long library call (even-ripple k=150's certificate: 9 s with no check; a 10^6-disk
+# polish: minutes) the build ends kOneItemGrace (2 s) after the request, with the same line.
+timeout --preserve-status -s TERM 3 "$TRIPACK" build even-ripple --k 150 >"$tmp/build2.out" 2>"$tmp/build2.err"
+rc=$?
+check "build even-ripple --k 150 under timeout -s TERM 3: rc 130 ($rc), one line, nothing printed" \
+  bash -c "[ $rc -eq 130 ] && [ \$(wc -l <'$tmp/build2.err') -eq 1 ] && grep -q 'nothing was built' '$tmp/build2.err' && [ ! -s '$tmp/build2.out' ]"
 # On a terminal (script(1) gives it a pty) a build over 2 s shows the enumeration's progress.
 if command -v script >/dev/null; then
   script -qec "timeout --preserve-status -s INT 4 $TRIPACK build --n 298" /dev/null >"$tmp/pty.txt"
