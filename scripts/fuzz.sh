@@ -8,6 +8,7 @@
 # line per target: "N runs, no crash" or the reproducer file. Exits non-zero on any finding
 # (crash, sanitizer report, leak, timeout, out-of-memory).
 # Environment: FUZZ_TARGETS="fuzz_points ..." to run a subset, FUZZ_JOBS (build jobs, default 2),
+# FUZZ_RUN_JOBS (targets fuzzed at once, default one per core),
 # FUZZ_CXX / FUZZ_CC (default clang++ / clang; CXX and CC are ignored: libFuzzer needs clang).
 set -euo pipefail
 
@@ -40,10 +41,9 @@ max_len_of() {
   esac
 }
 
-failed=0
-summary=()
-for t in $targets; do
-  run="$build/run/$t"
+# One target on its corpus copy; its one line goes to $build/run/<target>/line.
+fuzz_one() {
+  local t=$1 run="$build/run/$1" log rc runs artifact kind line
   rm -rf "$run"
   mkdir -p "$run/corpus" "$run/artifacts"
   cp "$root/fuzz/corpus/$t/"* "$run/corpus/"
@@ -65,11 +65,31 @@ for t in $targets; do
   if [[ $rc -eq 0 && -z $artifact ]]; then
     line="$t: ${runs:-?} runs in ${seconds} s, no crash"
   else
-    failed=1
     kind=$(grep -m1 -oE 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer): [a-z-]+|runtime error: .*' "$log" || true)
     line="$t: FINDING after ${runs:-?} runs (${kind:-exit $rc}): ${artifact:+$run/artifacts/$artifact} (log $log)"
   fi
+  echo "$line" >"$run/line"
   echo "$line"
+}
+
+# The targets run FUZZ_RUN_JOBS at a time (default: one per core); each gets its full seconds.
+parallel=${FUZZ_RUN_JOBS:-$(nproc)}
+running=0
+for t in $targets; do
+  fuzz_one "$t" &
+  running=$((running + 1))
+  if [[ $running -ge $parallel ]]; then
+    wait -n || true  # a failed target is reported from its line below
+    running=$((running - 1))
+  fi
+done
+wait || true
+
+failed=0
+summary=()
+for t in $targets; do
+  line=$(cat "$build/run/$t/line" 2>/dev/null || echo "$t: FINDING: no result (the run did not finish)")
+  [[ $line == "$t: FINDING"* ]] && failed=1
   summary+=("$line")
 done
 
