@@ -37,8 +37,7 @@ inline void expect_member_matches_catalogue(const Catalogue& catalogue, const Cl
   const std::string what = c.id + " k=" + std::to_string(member.k) +
                            " p=" + std::to_string(member.p) + " " + member.variant;
   const auto polish = polish_bond_system(pat.packing, pat.bonds, pat.rattlers);
-  EXPECT_TRUE(polish.converged) << what << " residual "
-                                << static_cast<double>(polish.max_residual);
+  EXPECT_TRUE(polish.converged) << what << " residual " << static_cast<double>(polish.max_residual);
   EXPECT_EQ(static_cast<long long>(pat.packing.size()), catalogue.n_of(c, member.k, member.p))
       << what;
   expect_valid_packing(pat, what);

@@ -16,9 +16,9 @@
 #include "jobs/atlas_files.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/explore.hpp"
+#include "member_checks.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/catalogue_checks.hpp"
-#include "member_checks.hpp"
 
 namespace tripack {
 namespace {

@@ -13,11 +13,11 @@
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/neighbours.hpp"
+#include "member_checks.hpp"
 #include "pipeline/analyze.hpp"
 #include "polish/polish.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
-#include "member_checks.hpp"
 
 namespace tripack {
 namespace {
