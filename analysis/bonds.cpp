@@ -13,50 +13,70 @@ namespace tripack {
 
 namespace {
 
-// Contact direction from disk i towards the contact point.
-Vec2L contact_direction(const Packing& pk, const Bond& b, int i) {
-  if (b.is_wall()) return -wall_normal<long double>(b.side());
-  const int j = b.a == i ? b.b : b.a;
-  const Vec2L v = pk.points[static_cast<std::size_t>(j)] - pk.points[static_cast<std::size_t>(i)];
-  return v / norm(v);
+// The angle of the contact direction from disk i towards the contact point (atan2 needs no unit
+// vector). In double: the surround test's margin (1e-9 rad) is far above its rounding.
+double contact_angle(const Packing& pk, const Bond& b, int i) {
+  Vec2L v;
+  if (b.is_wall()) {
+    v = -wall_normal<long double>(b.side());
+  } else {
+    const int j = b.a == i ? b.b : b.a;
+    v = pk.points[static_cast<std::size_t>(j)] - pk.points[static_cast<std::size_t>(i)];
+  }
+  return std::atan2(static_cast<double>(v.y), static_cast<double>(v.x));
 }
 
 // True if the directions surround the origin strictly: every angular gap below pi.
-bool surrounds(std::vector<long double> angles) {
+bool surrounds(std::vector<double>& angles) {
   if (angles.size() < 3) return false;
   std::sort(angles.begin(), angles.end());
-  long double widest = angles.front() + 2 * std::numbers::pi_v<long double> - angles.back();
+  double widest = angles.front() + 2 * std::numbers::pi - angles.back();
   for (std::size_t a = 1; a < angles.size(); ++a)
     widest = std::max(widest, angles[a] - angles[a - 1]);
-  return widest < std::numbers::pi_v<long double> - 1e-9L;
+  return widest < std::numbers::pi - 1e-9;
 }
 
 }  // namespace
 
+// The rattlers are the largest set whose removal leaves every other disk surrounded by its
+// remaining contacts; removing bonds only fails more tests, so that set is one fixed point, found
+// here by a work list: a disk is tested again only when it lost a contact.
 std::vector<int> find_rattlers(const Packing& pk, std::vector<Bond>& bonds) {
   const std::size_t n = pk.size();
-  std::vector<char> rattler(n, 0);
-  for (bool changed = true; changed;) {
-    changed = false;
-    std::vector<std::vector<long double>> angles(n);
-    for (const auto& b : bonds) {
-      for (int i : {b.a, b.b}) {
-        if (i < 0) continue;
-        const Vec2L v = contact_direction(pk, b, i);
-        angles[static_cast<std::size_t>(i)].push_back(std::atan2(v.y, v.x));
+  std::vector<std::vector<std::pair<std::size_t, double>>> contacts(n);  // (bond, angle)
+  for (std::size_t k = 0; k < bonds.size(); ++k)
+    for (int i : {bonds[k].a, bonds[k].b})
+      if (i >= 0)
+        contacts[static_cast<std::size_t>(i)].emplace_back(k, contact_angle(pk, bonds[k], i));
+  std::vector<char> rattler(n, 0), alive(bonds.size(), 1), queued(n, 1);
+  std::vector<std::size_t> work(n);
+  for (std::size_t i = 0; i < n; ++i) work[i] = n - 1 - i;  // disk 0 first
+  std::vector<double> angles;
+  while (!work.empty()) {
+    const std::size_t i = work.back();
+    work.pop_back();
+    queued[i] = 0;
+    angles.clear();
+    for (const auto& [k, angle] : contacts[i])
+      if (alive[k]) angles.push_back(angle);
+    if (surrounds(angles)) continue;
+    rattler[i] = 1;
+    for (const auto& [k, angle] : contacts[i]) {
+      if (!alive[k]) continue;
+      alive[k] = 0;
+      const Bond& b = bonds[k];
+      const int other = b.is_wall() ? -1 : (static_cast<std::size_t>(b.a) == i ? b.b : b.a);
+      if (other >= 0 && !rattler[static_cast<std::size_t>(other)] &&
+          !queued[static_cast<std::size_t>(other)]) {
+        queued[static_cast<std::size_t>(other)] = 1;
+        work.push_back(static_cast<std::size_t>(other));
       }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!rattler[i] && !surrounds(angles[i])) {
-        rattler[i] = 1;
-        changed = true;
-      }
-    }
-    std::erase_if(bonds, [&](const Bond& b) {
-      return rattler[static_cast<std::size_t>(b.a)] ||
-             (!b.is_wall() && rattler[static_cast<std::size_t>(b.b)]);
-    });
   }
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < bonds.size(); ++k)
+    if (alive[k]) bonds[kept++] = bonds[k];
+  bonds.resize(kept);
   std::vector<int> out;
   for (std::size_t i = 0; i < n; ++i)
     if (rattler[i]) out.push_back(static_cast<int>(i));

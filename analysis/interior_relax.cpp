@@ -1,15 +1,13 @@
 #include "analysis/interior_relax.hpp"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
-#include "analysis/openmp_regions.hpp"
+#include "analysis/sparse_cholesky.hpp"
 #include "core/neighbours.hpp"
 
 namespace tripack {
@@ -88,38 +86,8 @@ struct NewtonStep {
 // n = 5048: 30 against 64 ms; n = 20,098: 257 against 411 ms), CHOLMOD's supernodal LL^T above
 // (n = 80,198: 2.7 against 3.1 s; n = 100,577: 2.4 against 3.2 s for Eigen's LDL^T). The
 // fill-reducing ordering is computed again only when the terms changed since the last step
-// (`same_terms`).
-constexpr Eigen::Index kSupernodalFrom = 2 * 50000;  // unknowns
-class Cholesky {
- public:
-  explicit Cholesky(Eigen::Index unknowns) : supernodal_(unknowns >= kSupernodalFrom) {
-    if (supernodal_) run_openmp_regions_on_this_thread();
-  }
-  void analyzePattern(const SpMat& K) {
-    if (supernodal_)
-      supernodal_llt_.analyzePattern(K);
-    else
-      simplicial_llt_.analyzePattern(K);
-  }
-  void factorize(const SpMat& K) {
-    if (supernodal_)
-      supernodal_llt_.factorize(K);
-    else
-      simplicial_llt_.factorize(K);
-  }
-  Eigen::ComputationInfo info() const {
-    return supernodal_ ? supernodal_llt_.info() : simplicial_llt_.info();
-  }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const {
-    if (supernodal_) return supernodal_llt_.solve(b);
-    return simplicial_llt_.solve(b);
-  }
-
- private:
-  bool supernodal_;
-  Eigen::CholmodSupernodalLLT<SpMat> supernodal_llt_;
-  Eigen::SimplicialLLT<SpMat> simplicial_llt_;
-};
+// (`same_terms`). The simplicial Cholesky below SparseCholesky::kSupernodalFrom unknowns.
+using Cholesky = SparseCholesky;
 NewtonStep newton_step(const std::vector<Term>& terms, bool same_terms, const State& s,
                        long double t, long double L, Cholesky& cholesky) {
   const auto n = static_cast<Eigen::Index>(s.x.size());
@@ -169,9 +137,9 @@ NewtonStep newton_step(const std::vector<Term>& terms, bool same_terms, const St
   const double regularization = 1e-15 * std::max(1.0, K.diagonal().maxCoeff());
   for (Eigen::Index c = 0; c < 2 * n; ++c) K.coeffRef(c, c) += regularization;
   NewtonStep step;
-  if (!same_terms) cholesky.analyzePattern(K);
+  if (!same_terms) cholesky.analyze_pattern(K);
   cholesky.factorize(K);
-  if (cholesky.info() != Eigen::Success) return step;
+  if (!cholesky.succeeded()) return step;
   const Eigen::VectorXd z1 = cholesky.solve(gx), z2 = cholesky.solve(k);
   const double schur = kappa - k.dot(z2);
   if (!(schur > 0)) return step;
@@ -243,7 +211,8 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
   long double t = 0;
   for (const auto& term : near_terms(s, L))
     if (!term.wall()) t += 1 / slack(term, s, L);
-  Cholesky cholesky(opt.supernodal ? kSupernodalFrom : 2 * static_cast<Eigen::Index>(n));
+  Cholesky cholesky(2 * static_cast<Eigen::Index>(n),
+                    opt.supernodal ? 0 : SparseCholesky::kSupernodalFrom);
   std::vector<Term> last_terms;
   for (; rep.newton_steps < opt.max_newton_steps; t *= opt.t_factor) {
     ++rep.stages;

@@ -139,7 +139,7 @@ store::RunRecord run_record_of(const search::SearchResult& result, std::size_t c
   store::RunRecord run;
   run.n = result.request.n;
   run.seed = c.seed;
-  run.method = search::search_method(result.request);
+  run.method = search::search_method(result);
   run.events = c.steps;
   run.seconds = c.seconds;
   run.tool_version = tool_version;
@@ -175,7 +175,7 @@ RecordedSearch search_and_record(search::SearchRequest request, const std::strin
       if (!store->record(run_record_of(result, c, tool_version)))
         recorded.notes.push_back(
             fmt::format("{} already holds n = {} seed = {} ({}); not recorded again", db, request.n,
-                        result.chains[c].seed, search::search_method(result.request)));
+                        result.chains[c].seed, search::search_method(result)));
   return recorded;
 }
 

@@ -156,6 +156,7 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
   // Rank the candidates as built and polished; only the winner is certified (its construction,
   // an enumeration for some classes, is not repeated).
   std::optional<BuildResult> best;
+  std::vector<Packing> others;  // every candidate built but the best so far
   // Every variant: the default is not always the best (odd-ripple's other modification wins at
   // k = 2..4, its depressed cage from k = 5); equal d keeps the first (the default).
   for (const auto& m : members) {
@@ -177,12 +178,21 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
         continue;
       }
       result.candidates.push_back({b.pattern.provenance, b.pattern.packing.d, ""});
-      if (!best || denser_or_more_bonded(b.pattern, best->pattern)) best = std::move(b);
+      if (!best || denser_or_more_bonded(b.pattern, best->pattern)) {
+        if (best) others.push_back(best->pattern.packing);
+        best = std::move(b);
+      } else {
+        others.push_back(b.pattern.packing);
+      }
     }
   }
   if (!best)
     throw std::runtime_error("no member of the catalogue containing n = " + std::to_string(n) +
                              " could be built");
+  std::stable_sort(others.begin(), others.end(),
+                   [](const Packing& a, const Packing& b) { return a.d > b.d; });
+  if (others.size() > 3) others.resize(3);
+  result.runners_up = std::move(others);
   throw_if_cancelled(settings.cancel);
   finish_build(catalogue, *best, settings);
   result.best = std::move(*best);

@@ -85,6 +85,9 @@ struct BestBuild {
   BuildResult best;
   std::vector<BuildCandidate>
       candidates;  // every member and variant containing n, in catalogue order
+  // The next densest candidates' packings as built and polished (at most 3), densest first:
+  // where a search starts besides the winner (search/search.hpp).
+  std::vector<Packing> runners_up;
 };
 // Builds every member of the catalogue containing n without certificates, then the one with the
 // largest d with `settings`. Throws std::runtime_error when no class contains n.

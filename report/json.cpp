@@ -339,6 +339,16 @@ void render_json(std::ostream& out, const SearchResult& r, const RenderOptions& 
   j["steps"] = r.steps();
   j["cancelled"] = r.cancelled;
   j["target"] = r.request.target ? json(decimal17(*r.request.target)) : json(nullptr);
+  if (r.builder)
+    j["builder"] = {{"member", r.builder->member.empty() ? json(nullptr) : json(r.builder->member)},
+                    {"d", r.builder->d.empty() ? json(nullptr) : json(r.builder->d)},
+                    {"certified", r.builder->certified},
+                    {"candidates", r.builder->candidates},
+                    {"seconds", r.builder->seconds},
+                    {"cpu_seconds", r.builder->cpu_seconds},
+                    {"error", r.builder->error.empty() ? json(nullptr) : json(r.builder->error)}};
+  else
+    j["builder"] = nullptr;
   json packings = json::array();
   for (const auto& x : r.packings) {
     json p{{"rank", x.rank},

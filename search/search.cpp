@@ -14,6 +14,7 @@
 #include "core/timing.hpp"
 #include "patterns/inflation.hpp"
 #include "pipeline/analyze.hpp"
+#include "pipeline/build.hpp"
 #include "runner/runner.hpp"
 #include "sim/billiards.hpp"
 #include "sim/scene.hpp"
@@ -144,11 +145,24 @@ long double clearance(const Packing& p, Vec2L q, std::size_t skip) {
   return std::sqrt(best);
 }
 
+// What every chain starts from when the request names builders: the builder's certified packing
+// and its best candidates, and what building them cost.
+struct HeadStart {
+  std::optional<PackingRecord> record;  // certified
+  std::vector<Packing> starts;          // densest first
+  double seconds = 0, cpu_seconds = 0;
+};
+
 class Chain {
  public:
   Chain(const SearchRequest& request, std::uint64_t seed, Clock::time_point start,
-        const ProgressFn& progress)
-      : request_(request), rng_(seed), start_(start), progress_(progress) {
+        const ProgressFn& progress, const HeadStart* head = nullptr)
+      : request_(request),
+        rng_(seed),
+        start_(start),
+        progress_(progress),
+        head_(head),
+        independent_(request.starts.empty() && !head) {
     summary_.seed = seed;
     if (const std::optional<long long> base = patterns::inflation_base(request.n);
         base && request.method == SearchMethod::BasinHopping) {
@@ -161,8 +175,10 @@ class Chain {
   }
 
   void run() {
-    cpu_start_ = thread_cpu_seconds();
+    // The builder's CPU seconds are every chain's: a chain's clock starts when the search did.
+    cpu_start_ = thread_cpu_seconds() - (head_ ? head_->cpu_seconds : 0);
     if (base_) base_->cpu_start_ = cpu_start_;
+    if (head_) start_from(*head_);
     for (const Packing& p : request_.starts)
       if (members_.size() < std::size_t(settings_.population)) add_member(p);
     while (!done()) {
@@ -282,6 +298,29 @@ class Chain {
   void add_member(const Packing& p) {
     consider(p);
     members_.push_back({p, 0});
+  }
+
+  // The builder's packing is the best to beat from the first step (already certified: not
+  // analysed again), and its candidates are members.
+  void start_from(const HeadStart& head) {
+    if (head.record) {
+      best_d_ = head.record->d.value();
+      summary_.best = *head.record;
+      summary_.best_d = head.record->d.str(kLongDoubleDigits);
+      summary_.seconds_to_best = head.seconds;
+      summary_.cpu_seconds_to_best = head.cpu_seconds;
+      if (request_.target && best_d_ >= *request_.target * (1 - kTargetTolerance)) {
+        summary_.target_reached = true;
+        summary_.seconds_to_target = head.seconds;
+        summary_.cpu_seconds_to_target = head.cpu_seconds;
+      }
+    }
+    for (const Packing& p : head.starts) {
+      if (members_.size() >= std::size_t(settings_.population)) break;
+      first_time(p);
+      best_billiards_d_ = std::max(best_billiards_d_, p.d);
+      members_.push_back({p, 0});
+    }
   }
 
   bool duplicates_another(std::size_t i) const {
@@ -484,7 +523,7 @@ class Chain {
     PackingRecord record = pipeline::record_of(analysis);
     // A chain continued from stored packings is not an independent confirmation of them.
     record.sources.push_back(
-        {PackingSource::Kind::Billiards, "", summary_.seed, 1, request_.starts.empty() ? 1 : 0});
+        {PackingSource::Kind::Billiards, "", summary_.seed, 1, independent_ ? 1 : 0});
     const long double d = record.d.value();
     records_.push_back(record);
     if (final_member || d <= best_d_ * (1 + kTargetTolerance)) return;
@@ -515,6 +554,8 @@ class Chain {
   std::mt19937_64 rng_;
   Clock::time_point start_;
   const ProgressFn& progress_;
+  const HeadStart* head_;
+  bool independent_;  // started from nothing stored or built
   double cpu_start_ = 0;
   std::vector<Member> members_;
   std::size_t next_ = 0;
@@ -545,9 +586,53 @@ void check(const SearchRequest& request) {
 
 }  // namespace
 
-std::string search_method(const SearchRequest& request) {
-  return fmt::format("search {:g} s{}", request.seconds,
+namespace {
+
+std::string method_of(const SearchRequest& request, bool from_builders) {
+  return fmt::format("search {:g} s{}{}", request.seconds, from_builders ? ", from builders" : "",
                      request.starts.empty() ? "" : ", continued");
+}
+
+bool starts_from_builders(const SearchRequest& request) {
+  return request.builders && request.builder_starts && request.method == SearchMethod::BasinHopping;
+}
+
+// `build --n N` on the request's threads, timed; no head start when no class contains n.
+HeadStart build_head_start(const SearchRequest& request, BuilderStart& summary) {
+  HeadStart head;
+  const auto start = Clock::now();
+  const double cpu_start = process_cpu_seconds();
+  try {
+    pipeline::BuildSettings settings;
+    settings.threads = request.threads;
+    settings.cancel = request.cancel;
+    pipeline::BestBuild built = pipeline::build_best_for_n(*request.builders, request.n, settings);
+    const PackingRecord& record = built.best.record;
+    summary.member = pipeline::member_name(built.best.pattern.provenance);
+    summary.d = record.d.str(kLongDoubleDigits);
+    summary.certified = record.certified;
+    if (record.certified) head.record = record;
+    head.starts.push_back(built.best.pattern.packing);
+    for (Packing& p : built.runners_up) head.starts.push_back(std::move(p));
+    summary.candidates = static_cast<int>(head.starts.size());
+  } catch (const Cancelled&) {
+    summary.error = "interrupted";
+  } catch (const std::exception& e) {
+    summary.error = e.what();
+  }
+  head.seconds = summary.seconds = seconds_since(start);
+  head.cpu_seconds = summary.cpu_seconds = process_cpu_seconds() - cpu_start;
+  return head;
+}
+
+}  // namespace
+
+std::string search_method(const SearchRequest& request) {
+  return method_of(request, starts_from_builders(request));
+}
+
+std::string search_method(const SearchResult& result) {
+  return method_of(result.request, result.builder && !result.builder->member.empty());
 }
 
 SearchResult run_search(const SearchRequest& request) {
@@ -556,14 +641,21 @@ SearchResult run_search(const SearchRequest& request) {
   result.request = request;
   result.request.progress = {};
   result.request.cancel = nullptr;
+  result.request.builders = nullptr;
   const auto start = Clock::now();
   const ProgressFn progress = serialised(request.progress);
+  std::optional<HeadStart> head;
+  if (starts_from_builders(request)) {
+    result.builder.emplace();
+    head = build_head_start(request, *result.builder);
+    if (head->starts.empty()) head.reset();
+  }
   std::vector<SearchChain> chains(static_cast<std::size_t>(request.threads));
   std::vector<std::vector<PackingRecord>> found(chains.size());
   JobItems items;
   items.count = chains.size();
   items.run = [&](std::size_t c) {
-    Chain chain(request, request.seed + c, start, progress);
+    Chain chain(request, request.seed + c, start, progress, head ? &*head : nullptr);
     chain.run();
     chains[c] = chain.summary();
     found[c] = chain.records();
@@ -576,6 +668,7 @@ SearchResult run_search(const SearchRequest& request) {
   // A chain meets one packing many times (a member walking a plateau, its final analysis): it
   // counts once per chain, so that a packing's runs are the chains that reached it.
   std::vector<PackingRecord> all;
+  if (head && head->record) all.push_back(*head->record);
   for (auto& records : found)
     for (PackingRecord& record : merge_same_packings(std::move(records))) {
       for (PackingSource& source : record.sources)

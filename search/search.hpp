@@ -26,6 +26,10 @@
 #include "core/progress.hpp"
 #include "core/record.hpp"
 
+namespace tripack {
+class Catalogue;
+}
+
 namespace tripack::search {
 
 enum class SearchMethod {
@@ -49,6 +53,15 @@ struct SearchRequest {
   // Packings to continue from (a database's best): they join the population before any random
   // start. Empty: the search starts from nothing stored.
   std::vector<Packing> starts;
+  // Set: before the chains, `build --n N` (pipeline::build_best_for_n, on `threads` threads).
+  // Its certified packing is every chain's best to beat and its best candidates join every
+  // chain's population, so the search never returns less than the builder and its own moves go
+  // on from there. The builder's time counts in every chain's budget and CPU seconds (time to
+  // target included). Chains so started confirm nothing independently ("from builders").
+  // `tripack search` sets it unless --no-builder-starts; campaigns never do (their chains are
+  // the atlas's independent confirmations).
+  const Catalogue* builders = nullptr;
+  bool builder_starts = true;  // the command's switch: whether it sets `builders`
   // Stage "search": one report per step that changed the best, and one per finished chain.
   ProgressFn progress;
   const CancelToken* cancel = nullptr;  // set: the chains stop after their current step
@@ -68,6 +81,9 @@ struct SearchRequest {
     o.parsed(
         "--target", [this](const std::string& s) { target = positive_decimal(s, "--target"); },
         "none", "stop a chain once a certified d >= this is found");
+    o.flag("!--no-builder-starts", builder_starts,
+           "start from nothing built (by default every chain starts from build --n N's best "
+           "candidates, and the builder's time counts in the budget)");
     o.flag("!--no-lattice-starts", lattice_starts,
            "every fresh start from random (by default half are the triangular lattice with "
            "random vacancies)");
@@ -92,8 +108,19 @@ struct SearchChain {
   std::string base_best_d;
 };
 
+// What the chains started from when `builders` was set.
+struct BuilderStart {
+  std::string member;  // "vacancy-segment k=4 p=28"; empty when no class contains n
+  std::string d;       // its d ("" when none)
+  bool certified = false;
+  int candidates = 0;  // of its candidates, how many joined every chain's population
+  double seconds = 0, cpu_seconds = 0;  // the build's wall and process CPU seconds
+  std::string error;                    // why there is none (no class contains n, ...)
+};
+
 struct SearchResult {
-  SearchRequest request;  // what was asked (no callbacks)
+  SearchRequest request;  // what was asked (no callbacks, no catalogue)
+  std::optional<BuilderStart> builder;
   // Distinct certified packings the chains found, ranked and labelled (core/ranking.hpp), best
   // first; each with the chain seeds that reached it as billiards sources.
   std::vector<PackingRecord> packings;
@@ -107,7 +134,9 @@ struct SearchResult {
 
 // The method a search chain is recorded under (jobs/stored.hpp): "search S s" (S the budget),
 // "search S s, continued" when it started from stored packings.
+// "search S s, from builders" when its chains started from the builder's candidates.
 std::string search_method(const SearchRequest& request);
+std::string search_method(const SearchResult& result);
 // Throws std::invalid_argument for n < 2, a budget that is not positive, threads < 1, or a start
 // that is not a packing of n disks.
 SearchResult run_search(const SearchRequest& request);

@@ -16,10 +16,11 @@ json_has_packing() {
   "$PY" -c 'import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if j.get("packings") else 1)' "$1"
 }
 
-# search: 10 tries under SIGINT, 2 under SIGTERM.
+# search: 10 tries under SIGINT, 2 under SIGTERM, its chains interrupted (without the builder
+# start, which takes about 3 s at n = 150 and is tried below).
 ok=0
 for try in $(seq 1 10); do
-  timeout --preserve-status -s INT 3 "$TRIPACK" search 150 --seconds 60 --json \
+  timeout --preserve-status -s INT 3 "$TRIPACK" search 150 --seconds 60 --no-builder-starts --json \
     >"$tmp/s.json" 2>"$tmp/s.err"
   rc=$?
   [ "$rc" -eq 130 ] && json_has_packing "$tmp/s.json" && ok=$((ok + 1))
@@ -30,11 +31,22 @@ check "stderr is the one line 'tripack: cancelled: ...' ($(wc -l <"$tmp/s.err") 
 check "stderr does not start with an empty line" [ -n "$(head -c1 "$tmp/s.err" | tr -d '\n')" ]
 ok=0
 for try in 1 2; do
-  timeout --preserve-status 3 "$TRIPACK" search 150 --seconds 60 --json >"$tmp/s.json" 2>/dev/null
+  timeout --preserve-status 3 "$TRIPACK" search 150 --seconds 60 --no-builder-starts --json \
+    >"$tmp/s.json" 2>/dev/null
   rc=$?
   [ "$rc" -eq 130 ] && json_has_packing "$tmp/s.json" && ok=$((ok + 1))
 done
 check "search 150 under timeout (SIGTERM) 3: a result in $ok of 2 tries" [ "$ok" -eq 2 ]
+# Interrupted while it builds its start (build --n 150 on one thread: several seconds): exit
+# 130, one line, and a result that says the build was interrupted and no chain ran a step.
+timeout --preserve-status -s INT 1 "$TRIPACK" search 150 --seconds 60 --json >"$tmp/b.json" \
+  2>"$tmp/b.err"
+rc=$?
+check "search 150 interrupted in its build: rc 130 ($rc), one line, builder 'interrupted', 0 steps" \
+  bash -c "[ $rc -eq 130 ] && [ \$(wc -l <'$tmp/b.err') -eq 1 ] && '$PY' -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j[\"builder\"][\"error\"] == \"interrupted\" and j[\"steps\"] == 0, j[\"builder\"]' '$tmp/b.json'"
 
 # search --db: the chains that finished are recorded.
 timeout --preserve-status -s INT 3 "$TRIPACK" search 60 --seconds 60 --db "$tmp/search.db" \
