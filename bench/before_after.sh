@@ -38,7 +38,9 @@ for ((rep = 0; rep < REPS; rep++)); do
       end=$(date +%s.%N)
       awk -v r="$runs" -v s="$start" -v e="$end" 'BEGIN { print r / (e - s) }' >>"$work/campaign.$side.$n"
     done
-    "$dir/tripack" search 60 --steps 100 --threads 1 --seed 1 --json 2>/dev/null |
+    # the search's own steps: without the builder start where the binary has one
+    no_builder=$("$dir/tripack" search --help 2>/dev/null | grep -o -- --no-builder-starts || true)
+    "$dir/tripack" search 60 --steps 100 --threads 1 --seed 1 $no_builder --json 2>/dev/null |
       python3 -c 'import json, sys; j = json.load(sys.stdin); print(j["steps"] / j["seconds"])' \
         >>"$work/search.$side"
   done

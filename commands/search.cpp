@@ -129,8 +129,11 @@ class Search : public RequestCommand<search::SearchRequest, true> {
   }
   int run(const Context& c) override {
     request.cancel = c.cancel;
-    const Catalogue catalogue = load_catalogue(c);
-    if (request.builder_starts) request.builders = &catalogue;
+    std::optional<Catalogue> catalogue;  // read only when the chains start from the builders
+    if (request.builder_starts && request.method == search::SearchMethod::BasinHopping) {
+      catalogue.emplace(load_catalogue(c));
+      request.builders = &*catalogue;
+    }
     report::ProgressLine progress(std::cerr,
                                   terminal_line(fmt::format("search n={}", request.n), out));
     request.progress = progress.callback();

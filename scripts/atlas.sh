@@ -6,7 +6,7 @@
 # (n, seed) already in the database, so an interrupted run (Ctrl-C, a killed session) continues
 # where it stopped, and a finished one costs only the atlas step (~2 min).
 #
-# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress confirm
+# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress beyond confirm
 #        confirm-long prune atlas (default: all but confirm-long, in that order).
 #        Env: TRIPACK (build/tripack), THREADS (2), CONFIRM_RUNS (4), CONFIRM_LONG_RUNS (4).
 # Each step's wall and CPU time is appended to data/atlas-times.log; docs/atlas.md has the
@@ -18,7 +18,8 @@ THREADS=${THREADS:-2}
 DB=data/atlas.db
 [ -x "$T" ] || bash scripts/build.sh
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(small large targeted stress confirm prune atlas)
+[ ${#steps[@]} -gt 0 ] || steps=(small large targeted stress beyond confirm prune atlas)
+LAST=${ATLAS_LAST:-300}  # the atlas covers n = 2..LAST
 TIMEFORMAT="%R s wall, %U s user, %S s sys"
 
 # step NAME COMMAND...: runs it, its output to data/logs/NAME.log, its times to atlas-times.log.
@@ -60,6 +61,14 @@ for s in "${steps[@]}"; do
       done
       step stress-atlas "$T" atlas --db data/stress.db --n 254,255,256,258,260 --ranked 0..0 \
         --out data/stress --json ;;
+    beyond)  # n = 201..LAST: search chains from random starts (3 of 4 s, seeds 10001..10003), then
+      # 4 of 20 s (seeds 20001..20004) at every n, and the searches of data/beyond-atlas.csv
+      # that beat the builder there (60 s, seed 1, random starts only) imported as packings.
+      step beyond-sweep "$T" campaign --n "201..$LAST" --runs 3 --seed 10001 --search-seconds 4 \
+        --threads "$THREADS" --db "$DB"
+      step beyond-confirm "$T" campaign --n "201..$LAST" --runs 4 --seed 20001 \
+        --search-seconds 20 --threads "$THREADS" --db "$DB"
+      step beyond-import "$T" db import data/beyond-atlas/search-*.txt --db "$DB" ;;
     prune)  # keep the database small enough to commit: the best 30 (n <= 34) or 5 per n
       step prune-small "$T" db prune --keep 30 --n 2..34 --db "$DB"
       step prune-large "$T" db prune --keep 5 --n 35..100000 --db "$DB"
@@ -71,7 +80,7 @@ for s in "${steps[@]}"; do
       # A later round raises CONFIRM_RUNS (8: seeds 20005..20008 are added where still needed).
       step search-35-200 "$T" campaign --n 35..200 --runs 3 --seed 10001 --search-seconds 4 \
         --threads "$THREADS" --db "$DB"
-      step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
+      step atlas "$T" atlas --db "$DB" --n "2..$LAST" --ranked 16..34 --ranked-count 20 \
         --out data --json
       for n in $(awk -F, 'NR > 1 && $2 == 1 && $10 < 3 { print $1 }' data/atlas.csv); do
         step "confirm-$n" "$T" campaign --n "$n" --runs "${CONFIRM_RUNS:-4}" --seed 20001 \
@@ -86,8 +95,8 @@ for s in "${steps[@]}"; do
           --seed 30001 --search-seconds 120 --threads "$THREADS" --db "$DB"
       done ;;
     atlas)
-      step atlas "$T" atlas --db "$DB" --n 2..200 --ranked 16..34 --ranked-count 20 \
+      step atlas "$T" atlas --db "$DB" --n "2..$LAST" --ranked 16..34 --ranked-count 20 \
         --out data --json ;;
-    *) echo "atlas.sh: unknown step '$s' (small large targeted stress confirm confirm-long prune atlas)" >&2; exit 2 ;;
+    *) echo "atlas.sh: unknown step '$s' (small large targeted stress beyond confirm confirm-long prune atlas)" >&2; exit 2 ;;
   esac
 done

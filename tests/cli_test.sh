@@ -427,6 +427,20 @@ chain = a["chains"][0]
 assert 0 <= chain["analysis_cpu_seconds"] <= chain["cpu_seconds"] and chain["analyses"] >= 1
 PY
 then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --no-lattice-starts"; fi
+# search never returns less than build --n (a sample; scripts/search-vs-build.py covers every
+# N <= 300): at 48 and 102 the builder's packings are denser than any search from random found.
+for n in 48 102; do
+  b=$("$TRIPACK" build --n "$n" --json 2>/dev/null)
+  s=$("$TRIPACK" search "$n" --steps 2 --seed 3 --json 2>/dev/null)
+  if python3 - "$b" "$s" <<'PY'
+import json, sys
+from decimal import Decimal
+b, s = (json.loads(x) for x in sys.argv[1:3])
+assert Decimal(s["best"]["d"]) >= Decimal(b["d"]) * (1 - Decimal("1e-15")), (b["d"], s["best"]["d"])
+assert s["builder"]["member"].startswith(b["class"]) and s["builder"]["certified"]
+PY
+  then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search $n below build --n $n"; fi
+done
 "$TRIPACK" search 12 --steps 3 --seed 9 --db "$sdb" >/dev/null 2>&1
 "$TRIPACK" search 12 --steps 3 --seed 9 --db "$sdb" >/dev/null 2>"$sdb.err"
 # (chains started from the builder's packing: `search 10 s, from builders`, docs/search.md)
