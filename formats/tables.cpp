@@ -13,7 +13,7 @@ const TableFormat& atlas_table_format() {
   static const TableFormat f{"atlas table",
                              "atlas.csv",
                              {"n", "rank", "label", "d", "L", "delta", "bonds", "rattlers",
-                              "certified", "confirmations", "source", "file"}};
+                              "certified", "confirmations", "source", "file", "provenance"}};
   return f;
 }
 

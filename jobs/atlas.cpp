@@ -98,9 +98,56 @@ std::vector<std::string> builders_of(const PackingRecord& r) {
   return names;
 }
 
-// Ranks the certified candidates of n, labels them and keeps the best `keep`.
+// What the database says of n: which independent unit ended in which stored packing, and the
+// stored packings' d (read once, before the threads start).
+struct UnitsOfN {
+  std::vector<store::UnitOfPacking> units;
+  std::map<long long, long double> d_of_packing;  // by packing id
+};
+
+// The provenance of a value of d: the builders and imported files of the candidates of that
+// value, and the independent units that ended in a stored packing of it, by method ("search 20
+// s: 2 (seeds 20002, 20007)"). Stored d carry fewer digits than the 30 of the polished
+// candidates, so a stored packing is of the value within 1e-14 relative (distinct values of one n
+// have never come closer than 8e-12: docs/atlas.md, "Confirmations").
+std::string provenance_of(long double value, const std::vector<PackingRecord>& candidates,
+                          const UnitsOfN& db) {
+  const auto same = [&](long double d, long double tolerance) {
+    return std::fabs(d - value) <= tolerance * value;
+  };
+  std::set<std::string> builders, imports;
+  for (const auto& c : candidates)
+    if (same(c.d.value(), kSameValueTolerance))
+      for (const auto& source : c.sources) {
+        if (source.kind == PackingSource::Kind::Builder) builders.insert(source.name);
+        if (source.kind == PackingSource::Kind::Import) imports.insert(source.name);
+      }
+  std::vector<std::string> parts;
+  for (const auto& b : builders) parts.push_back("builder " + b);
+  for (const auto& i : imports) parts.push_back("import " + i);
+  std::map<std::string, std::vector<std::uint64_t>> seeds;  // by method
+  for (const auto& u : db.units) {
+    const auto d = db.d_of_packing.find(u.packing_id);
+    if (d != db.d_of_packing.end() && same(d->second, 1e-14L)) seeds[u.method].push_back(u.seed);
+  }
+  for (const auto& [method, list] : seeds) {
+    std::string part =
+        fmt::format("{}: {} (seed{} ", method, list.size(), list.size() == 1 ? "" : "s");
+    for (std::size_t i = 0; i < std::min<std::size_t>(4, list.size()); ++i)
+      part += (i ? ", " : "") + std::to_string(list[i]);
+    parts.push_back(part + (list.size() > 4 ? ", ...)" : ")"));
+  }
+  std::string text;
+  for (const auto& part : parts) text += (text.empty() ? "" : "; ") + part;
+  return text;
+}
+
+// Ranks the certified candidates of n, labels them and keeps the best `keep`, each with the
+// provenance of its value.
 std::vector<PackingRecord> rows_of(long long n, std::vector<PackingRecord> candidates,
-                                   std::size_t keep, std::vector<AtlasBuilderCheck>& builders) {
+                                   std::size_t keep, std::vector<AtlasBuilderCheck>& builders,
+                                   const UnitsOfN& db,
+                                   std::map<std::string, std::string>& provenance) {
   std::vector<PackingRecord> certified;
   for (auto& c : candidates)
     if (c.certified) certified.push_back(std::move(c));
@@ -116,8 +163,9 @@ std::vector<PackingRecord> rows_of(long long n, std::vector<PackingRecord> candi
       }
     if (c.rank > keep) continue;
     c.file = "atlas/" + c.label + ".txt";
-    rows.push_back(std::move(c));
+    rows.push_back(c);
   }
+  for (const auto& row : rows) provenance[row.label] = provenance_of(row.d.value(), certified, db);
   return rows;
 }
 
@@ -183,6 +231,7 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
   // Everything read from the database first (one connection, one thread): the best few stored
   // packings of each n. Builders may add packings above them, so a few more than kept.
   std::map<long long, std::vector<PackingRecord>> stored;
+  std::map<long long, UnitsOfN> units;
   {
     store::OpenOptions options;
     options.create = false;
@@ -192,6 +241,8 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
       auto ranked = ranked_packings(db, n);
       if (ranked.size() > keep_of(n) + 4) ranked.resize(keep_of(n) + 4);
       stored[n] = std::move(ranked);
+      units[n].units = db.independent_units(n);
+      for (const auto& p : db.packings(n)) units[n].d_of_packing[p.id] = std::stold(p.d);
     }
   }
   std::map<long long, std::vector<BuildRequest>> members;
@@ -223,7 +274,8 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
 
   for (auto& [n, outcome] : outcomes) {
     result.errors.insert(result.errors.end(), outcome.errors.begin(), outcome.errors.end());
-    auto rows = rows_of(n, std::move(outcome.candidates), keep_of(n), outcome.builders);
+    auto rows = rows_of(n, std::move(outcome.candidates), keep_of(n), outcome.builders, units.at(n),
+                        result.provenance);
     if (rows.empty()) result.missing.push_back(n);
     for (auto& row : rows) {
       if (!row.d.multiprecision())

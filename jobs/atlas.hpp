@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -84,6 +85,9 @@ struct AtlasResult {
   AtlasSettings settings;
   std::string db;
   std::vector<PackingRecord> rows;  // by n, then rank
+  // By label: the builders, imports and independent units (method, seeds) that reached the
+  // row's value of d, what its confirmations count (the table's provenance column).
+  std::map<std::string, std::string> provenance;
   std::vector<AtlasBuilderCheck> builders;
   std::vector<AtlasGap> gaps;       // by class, then p, then k
   std::vector<long long> missing;   // n in the range without any certified packing

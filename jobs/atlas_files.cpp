@@ -17,7 +17,7 @@ namespace tripack::jobs {
 
 namespace {
 
-std::vector<std::string> fields_of(const PackingRecord& r) {
+std::vector<std::string> fields_of(const PackingRecord& r, const std::string& provenance) {
   return {std::to_string(r.n()),
           std::to_string(r.rank),
           r.label,
@@ -29,7 +29,8 @@ std::vector<std::string> fields_of(const PackingRecord& r) {
           r.certified ? "true" : "false",
           std::to_string(r.confirmations()),
           r.source_text(),
-          r.file};
+          r.file,
+          provenance};
 }
 
 }  // namespace
@@ -51,6 +52,7 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
         "delta: " + atlas_delta(row),
         "source: " + row.source_text(),
         "confirmations: " + std::to_string(row.confirmations()),
+        "provenance: " + (atlas.provenance.count(row.label) ? atlas.provenance.at(row.label) : ""),
         std::string("certified: ") + (row.certified ? "yes" : "no") + " (" + row.verdict + ")"};
     if (!row.pattern.rattlers.empty())
       options.comments.push_back(
@@ -75,7 +77,10 @@ void write_atlas(const AtlasResult& atlas, const std::filesystem::path& dir) {
 
 std::string atlas_table(const AtlasResult& atlas) {
   std::string table = table_header(atlas_table_format());
-  for (const auto& row : atlas.rows) table += table_line(fields_of(row));
+  for (const auto& row : atlas.rows) {
+    const auto p = atlas.provenance.find(row.label);
+    table += table_line(fields_of(row, p == atlas.provenance.end() ? "" : p->second));
+  }
   return table;
 }
 

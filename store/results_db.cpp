@@ -215,10 +215,14 @@ std::string d_key(const std::string& d) {
   return identity_d_key(std::stold(d));
 }
 
-constexpr const char* kPackingColumns =
+// The units that started from nothing stored or built (search/search.hpp's method names).
+constexpr const char* kIndependentMethod =
+    "runs.method NOT LIKE '%, continued' AND runs.method NOT LIKE '%, from builders%'";
+
+const std::string kPackingColumns =
     "id, n, d, graph_hash, points, bonds, rattlers, certified, first_seed, runs, origin, source, "
-    "tool_version, (SELECT COUNT(*) FROM runs WHERE runs.packing_id = packings.id AND runs.method "
-    "NOT LIKE '%, continued')";
+    "tool_version, (SELECT COUNT(*) FROM runs WHERE runs.packing_id = packings.id AND " +
+    std::string(kIndependentMethod) + ")";
 // Largest d first; then most runs, then the first seed (imports without one last), then age.
 constexpr const char* kPackingOrder = "d_value DESC, runs DESC, first_seed IS NULL, first_seed, id";
 
@@ -601,6 +605,19 @@ std::vector<StoredPacking> ResultsDb::packings(long long n) const {
   s.bind(1, n);
   std::vector<StoredPacking> out;
   while (s.step()) out.push_back(packing_from_row(s));
+  return out;
+}
+
+std::vector<UnitOfPacking> ResultsDb::independent_units(long long n) const {
+  const std::string sql = fmt::format(
+      "SELECT packing_id, method, seed, seconds FROM runs WHERE n = ?1 AND packing_id IS NOT NULL "
+      "AND {} ORDER BY method, seed",
+      kIndependentMethod);
+  Statement s(db_, path_, sql.c_str());
+  s.bind(1, n);
+  std::vector<UnitOfPacking> out;
+  while (s.step())
+    out.push_back({s.integer(0), s.text(1), static_cast<std::uint64_t>(s.integer(2)), s.real(3)});
   return out;
 }
 

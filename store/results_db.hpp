@@ -91,6 +91,15 @@ struct RunRecord {
   std::string tool_version;
 };
 
+// An independent unit (a billiards run or a search chain from random starts) and the stored
+// packing it ended in: who reached what (the atlas's provenance column).
+struct UnitOfPacking {
+  long long packing_id = 0;
+  std::string method;
+  std::uint64_t seed = 0;
+  double seconds = 0;
+};
+
 struct OpenOptions {
   int busy_timeout_ms = 5000;  // wait this long for a lock held by another writer
   // false: the file must exist (the read commands never create an empty database).
@@ -130,8 +139,10 @@ class ResultsDb {
   void compact();
   std::vector<StoredPacking> packings(long long n) const;  // largest d first
   std::vector<StoredPacking> best_per_n() const;           // one per n, by n
-  std::string integrity_check() const;                     // "ok" when sound
-  DbStatistics statistics() const;                         // integrity and counts
+  // The independent units of n whose packing is stored, by method and seed.
+  std::vector<UnitOfPacking> independent_units(long long n) const;
+  std::string integrity_check() const;  // "ok" when sound
+  DbStatistics statistics() const;      // integrity and counts
   const std::string& path() const { return path_; }
 
  private:

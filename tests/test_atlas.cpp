@@ -54,15 +54,8 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
     if (n < 2) continue;
     ASSERT_TRUE(best.count(n)) << "n = " << n << " is not in the atlas";
     // A builder above the atlas must be one the atlas could not take: not certified (197 is
-    // 4e-14 above it, uncertified: a degenerate maximum, docs/certified.md). Four vacancy-segment
-    // members are certified packings denser than the atlas's (docs/findings.md §11), found by
-    // the builder and not yet merged into data/atlas.csv (its exact d(n) rows would change):
-    // 48 (k=3 p=7, 3.3e-5 above), 102 (k=11 p=3, 6.7e-10), 169 (k=16 p=2, 1.05e-11; certified
-    // by the multiprecision certificate) and 188 (k=17 p=2, 8.5e-12).
-    if (member.class_id == "vacancy-segment" && (n == 48 || n == 102 || n == 169 || n == 188)) {
-      EXPECT_GT(built.packing.d, best[n]) << n;
-      continue;
-    }
+    // 4e-14 above it, uncertified: a degenerate maximum, docs/certified.md). The atlas is built
+    // with every builder (`tripack atlas`), so a certified one above it means it is stale.
     if (built.packing.d * (1 - 1e-14L) > best[n]) {
       EXPECT_FALSE(pipeline::analyze_packing(built.packing, {}).certified())
           << member.class_id << " k=" << member.k << " p=" << member.p << " (n = " << n
@@ -119,6 +112,18 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   EXPECT_NE(t12a.source_text().find("builder four-delta k=2"), std::string::npos)
       << t12a.source_text();
   EXPECT_NE(t12a.source_text().find("billiards seed"), std::string::npos) << t12a.source_text();
+  // Its provenance: the builders and the independent runs of its value, by method, as many runs
+  // as the confirmations count besides the builders' one (the four builders give one packing).
+  const std::string& provenance = atlas.provenance.at(t12a.label);
+  EXPECT_NE(provenance.find("builder four-delta k=2"), std::string::npos) << provenance;
+  const auto runs_at = provenance.find("billiards: ");
+  ASSERT_NE(runs_at, std::string::npos) << provenance;
+  EXPECT_EQ(std::stoll(provenance.substr(runs_at + 11)) + 1, t12a.confirmations()) << provenance;
+  // n = 9 has no run: its builder alone.
+  for (const auto& row : atlas.rows)
+    if (row.n() == 9) {
+      EXPECT_EQ(atlas.provenance.at(row.label).rfind("builder ", 0), 0u);
+    }
   // Written and read back: the same rows; every file named exists.
   jobs::write_atlas(atlas, dir / "data");
   const auto entries = jobs::read_atlas(dir / "data" / "atlas.csv");

@@ -64,8 +64,9 @@ TEST(VacancySegment, RestartsReachTheAtlasWhereTheLatticeRelaxStopsShort) {
 }
 
 TEST(VacancySegment, BuildsA48DenserThanTheAtlas) {
-  // t48a (data/atlas.csv, reached by 105 billiards runs) has d = 0.114820002270213543567; the
-  // 7-site segment of Delta(10) gives a certified packing 3.3e-5 denser (docs/findings.md §11).
+  // The best any search from random found at 48 (105 billiards runs; data/atlas.csv's t48a until
+  // the builders' records were merged) has d = 0.114820002270213543567; the 7-site segment of
+  // Delta(10) gives a certified packing 3.3e-5 denser (docs/findings.md §11).
   const auto b = pipeline::build_and_certify(catalogue(), {"vacancy-segment", 3, 7, ""}, {});
   ASSERT_TRUE(b.analysis);
   EXPECT_TRUE(b.verified()) << b.analysis->status();
