@@ -20,7 +20,7 @@
 namespace tripack::jobs {
 
 struct AtlasSettings {
-  long long n_first = 2, n_last = 200;  // every n of this range, or:
+  long long n_first = 2, n_last = 300;  // every n of this range, or:
   std::vector<long long> n_values;      // when not empty, these n only (in [n_first, n_last])
   // These n keep their best `ranked_count` distinct packings (the paper's rankings to check);
   // every other n keeps its best one.
@@ -37,7 +37,7 @@ struct AtlasSettings {
           n_first = *std::min_element(n_values.begin(), n_values.end());
           n_last = *std::max_element(n_values.begin(), n_values.end());
         },
-        "2..200", "A..B, N, or a list of them: 254,255,256");
+        "2..300", "A..B, N, or a list of them: 254,255,256");
     o.parsed(
         "--ranked",
         [this](const std::string& s) {

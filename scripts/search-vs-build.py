@@ -21,7 +21,8 @@ if ".." in a.n:
     wanted = list(range(lo, hi + 1))
 else:
     wanted = [int(x) for x in a.n.split(",")]
-FIELDS = ["n", "builder", "d_build", "d_search", "search_steps", "relative_difference", "holds"]
+FIELDS = ["n", "builder", "d_build", "certified_build", "d_search", "search_steps",
+          "relative_difference", "holds"]
 done = {}
 if os.path.exists(a.out):
     done = {int(r["n"]): r for r in csv.DictReader(open(a.out))}
@@ -51,7 +52,8 @@ for n in wanted:
     d_search = Decimal(s["best"]["d"]) if s.get("best") else Decimal(0)
     rel = (d_search - d_build) / d_build
     row = {"n": n, "builder": b["class"] + f" k={b['k']}" + (f" p={b['p']}" if b.get("p") else ""),
-           "d_build": b["d"], "d_search": str(d_search), "search_steps": s["steps"],
+           "d_build": b["d"], "certified_build": str(b["certificate"]["certified"]).lower(),
+           "d_search": str(d_search), "search_steps": s["steps"],
            "relative_difference": f"{float(rel):.3e}", "holds": str(rel >= Decimal("-1e-15")).lower()}
     writer.writerow(row)
     out.flush()
