@@ -8,8 +8,9 @@ Prints the count of certified rows and the median and largest seconds at the end
 usage: python3 scripts/build-scan.py [--tripack build/tripack] [--n 2..1000] [--jobs 1]
                                      [--limit 600] [--out data/build-scan.csv]
                                      [--extra '--exhaustive']"""
-import argparse, csv, json, os, statistics, subprocess, sys, time
+import argparse, json, statistics, subprocess, sys, time
 from concurrent.futures import ThreadPoolExecutor
+from resumable_table import n_values, open_table
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--tripack", default="build/tripack")
@@ -19,24 +20,12 @@ ap.add_argument("--limit", type=float, default=600, help="seconds before a build
 ap.add_argument("--out", default="data/build-scan.csv")
 ap.add_argument("--extra", default="", help="more build options, e.g. '--exhaustive'")
 a = ap.parse_args()
-if ".." in a.n:
-    lo, hi = (int(x) for x in a.n.split(".."))
-    wanted = range(lo, hi + 1)
-else:
-    wanted = [int(x) for x in a.n.split(",")]
+wanted = n_values(a.n)
 FIELDS = ["n", "class", "k", "p", "variant", "d", "bonds", "rattlers", "certified", "seconds",
           "note"]
 
-done = {}
-if os.path.exists(a.out):
-    done = {int(r["n"]): r for r in csv.DictReader(open(a.out))}
+done, out, writer = open_table(a.out, FIELDS)
 todo = [n for n in wanted if n not in done]
-new_file = not os.path.exists(a.out)
-out = open(a.out, "a", newline="")
-writer = csv.DictWriter(out, FIELDS)
-if new_file:
-    writer.writeheader()
-    out.flush()
 
 
 def build(n):

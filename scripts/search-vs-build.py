@@ -7,8 +7,9 @@ budget, so a budget shorter than the build gives the builder's packing and no st
 Resumable: N already in --out are skipped. Prints the count that hold and every N that does not.
 usage: python3 scripts/search-vs-build.py [--tripack build/tripack] [--n 2..300]
                                          [--seconds 0.001] [--out data/search-vs-build.csv]"""
-import argparse, csv, json, os, subprocess, sys
+import argparse, json, subprocess, sys
 from decimal import Decimal
+from resumable_table import n_values, open_table
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--tripack", default="build/tripack")
@@ -16,22 +17,10 @@ ap.add_argument("--n", default="2..300", help="a range A..B, or a list A,B,C")
 ap.add_argument("--seconds", default="0.001")
 ap.add_argument("--out", default="data/search-vs-build.csv")
 a = ap.parse_args()
-if ".." in a.n:
-    lo, hi = (int(x) for x in a.n.split(".."))
-    wanted = list(range(lo, hi + 1))
-else:
-    wanted = [int(x) for x in a.n.split(",")]
+wanted = n_values(a.n)
 FIELDS = ["n", "builder", "d_build", "certified_build", "d_search", "search_steps",
           "relative_difference", "holds"]
-done = {}
-if os.path.exists(a.out):
-    done = {int(r["n"]): r for r in csv.DictReader(open(a.out))}
-new_file = not os.path.exists(a.out)
-out = open(a.out, "a", newline="")
-writer = csv.DictWriter(out, FIELDS)
-if new_file:
-    writer.writeheader()
-    out.flush()
+done, out, writer = open_table(a.out, FIELDS)
 
 
 def run_json(args):
