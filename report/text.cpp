@@ -439,11 +439,12 @@ void render_text(std::ostream& out, const SearchResult& r, const RenderOptions&)
   if (r.builder)
     out << (r.builder->member.empty()
                 ? fmt::format("started from no builder: {}\n", r.builder->error)
-                : fmt::format("started from {} (d = {}, {}; {} candidates) built in {:.2f} s "
+                : fmt::format("started from {} (d = {}, {}; {} candidate{}) built in {:.2f} s "
                               "({:.2f} CPU s)\n",
                               r.builder->member, r.builder->d,
                               r.builder->certified ? "certified" : "NOT certified",
-                              r.builder->candidates, r.builder->seconds, r.builder->cpu_seconds));
+                              r.builder->candidates, r.builder->candidates == 1 ? "" : "s",
+                              r.builder->seconds, r.builder->cpu_seconds));
   if (r.packings.empty()) {
     out << "no certified packing found\n";
     return;
