@@ -17,7 +17,8 @@ using nlohmann::json;
 
 namespace {
 
-json row_json(const PackingRecord& r) {
+json row_json(const PackingRecord& r, const jobs::AtlasResult& a) {
+  const auto provenance = a.provenance.find(r.label);
   return {{"n", r.n()},
           {"rank", r.rank},
           {"label", r.label},
@@ -32,6 +33,7 @@ json row_json(const PackingRecord& r) {
           {"source", r.source_text()},
           {"runs", r.runs()},
           {"confirmations", r.confirmations()},
+          {"provenance", provenance == a.provenance.end() ? "" : provenance->second},
           {"file", r.file}};
 }
 
@@ -60,7 +62,7 @@ void render_text(std::ostream& out, const jobs::AtlasResult& a, const RenderOpti
 
 void render_json(std::ostream& out, const jobs::AtlasResult& a, const RenderOptions&) {
   json rows = json::array(), builders = json::array();
-  for (const auto& r : a.rows) rows.push_back(row_json(r));
+  for (const auto& r : a.rows) rows.push_back(row_json(r, a));
   for (const auto& b : a.builders)
     builders.push_back({{"n", b.n},
                         {"member", b.member},
