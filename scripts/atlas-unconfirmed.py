@@ -2,7 +2,7 @@
 """Writes data/atlas-unconfirmed.csv: every n whose rank-1 row in data/atlas.csv has
 fewer than 3 confirmations, with why, from data/atlas.csv and the runs table of data/atlas.db:
 how many independent units ran at n (billiards runs and search chains from random starts;
-continued searches do not count) and what reached the best.
+continued searches and those started from a builder's packing do not count) and what reached the best.
 usage: python3 scripts/atlas-unconfirmed.py [--next "CONFIRM_LONG_RUNS=24 bash scripts/atlas.sh confirm-long"]"""
 import argparse, csv, sqlite3
 
@@ -19,7 +19,8 @@ for r in csv.DictReader(open(a.atlas)):
         continue
     n = int(r["n"])
     units = dict(db.execute("SELECT method, COUNT(*) FROM runs WHERE n = ? AND method NOT LIKE "
-                            "'%, continued' GROUP BY method", (n,)).fetchall())
+                            "'%, continued' AND method NOT LIKE '%, from builders%' GROUP BY "
+                            "method", (n,)).fetchall())
     total = sum(units.values())
     searches = ", ".join(f"{c} of {m[len('search '):]}" for m, c in sorted(units.items())
                          if m.startswith("search"))

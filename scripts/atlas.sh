@@ -68,7 +68,10 @@ for s in "${steps[@]}"; do
         --threads "$THREADS" --db "$DB"
       step beyond-confirm "$T" campaign --n "201..$LAST" --runs 4 --seed 20001 \
         --search-seconds 20 --threads "$THREADS" --db "$DB"
-      step beyond-import "$T" db import data/beyond-atlas/search-*.txt --db "$DB" ;;
+      step beyond-import "$T" db import data/beyond-atlas/search-*.txt --db "$DB"
+      # GL1995's n_p(k) at 254..256 (findings.md §4): the builder's packing, which default
+      # billiards runs reach (17 to 32 of 64 in data/stress.db) and 20 s chains rarely do.
+      step beyond-billiards "$T" campaign --n 254..256 --runs 16 --threads "$THREADS" --db "$DB" ;;
     prune)  # keep the database small enough to commit: the best 30 (n <= 34) or 5 per n
       step prune-small "$T" db prune --keep 30 --n 2..34 --db "$DB"
       step prune-large "$T" db prune --keep 5 --n 35..100000 --db "$DB"

@@ -17,29 +17,45 @@ new = {r["label"]: r for r in csv.DictReader(open("data/atlas.csv"))}
 path = "data/atlas-exact.csv"
 rows = list(csv.DictReader(open(path)))
 fields = list(rows[0].keys())
-changed = []
+changed, dropped = [], []
+kept = []
 for r in rows:
     label = r["label"]
-    if r["proof"] == "pending":
-        continue
     was, now = old.get(label), new.get(label)
-    if now is None:
-        why = "the label left the atlas"
-    elif was is None or was["d"] != now["d"] or was["bonds"] != now["bonds"]:
-        why = (f"the label's packing changed (d {was['d'] if was else '?'} -> {now['d']}, "
-               f"bonds {was['bonds'] if was else '?'} -> {now['bonds']})")
-    else:
+    cert = os.path.join("data/exact", label + ".gp")
+    if now is None:  # the label left the atlas: its row and certificate go, a pending row of the
+        # label that took its place (same n and rank) comes below
+        dropped.append((was["n"] if was else r["n"], was["rank"] if was else "1", label))
+        if os.path.exists(cert):
+            os.remove(cert)
+        continue
+    kept.append(r)
+    if r["proof"] == "pending" or (was and was["d"] == now["d"] and was["bonds"] == now["bonds"]):
         continue
     changed.append(label)
     for k in ("degree", "polynomial", "root_low", "root_high", "seconds"):
         r[k] = ""
     r["proof"] = "pending"
-    r["reason"] = why + "; exact-atlas runs it again"
-    cert = os.path.join("data/exact", label + ".gp")
+    r["reason"] = (f"the label's packing changed (d {was['d'] if was else '?'} -> {now['d']}, "
+                   f"bonds {was['bonds'] if was else '?'} -> {now['bonds']}); exact-atlas runs "
+                   "it again")
     if os.path.exists(cert):
         os.remove(cert)
+rows = kept
+have = {r["label"] for r in rows}
+for n, rank, gone in dropped:
+    for label, now in new.items():
+        if now["n"] == n and now["rank"] == rank and label not in have:
+            changed.append(label)
+            have.add(label)
+            rows.append({**{k: "" for k in fields}, "n": n, "label": label, "proof": "pending",
+                         "reason": f"the atlas's packing of rank {rank} changed (it was {gone}, "
+                                   f"d {old[gone]['d'] if gone in old else '?'}; now d "
+                                   f"{now['d']}); exact-atlas runs it"})
 with open(path, "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
     w.writeheader()
     w.writerows(rows)
-print(f"exact-pending: {len(changed)} rows pending: {', '.join(changed) or 'none'}")
+print(f"exact-pending: {len(dropped)} rows of labels that left the atlas removed "
+      f"({', '.join(l for _, _, l in dropped) or 'none'}); {len(changed)} rows pending: "
+      f"{', '.join(changed) or 'none'}")
