@@ -1,7 +1,7 @@
-// The builders of the vacancy-segment classes (classes.yaml; docs/classes.md "Vacancy segments"):
-// a lattice with a straight vacancy segment, relaxed, and its Delta(2)-inflation. Each is a rule
-// in k: the enumeration is over every straight segment of the lattice up to symmetry, and no
-// stored packing is read.
+// The builders of the vacancy classes (classes.yaml; docs/classes.md "Vacancy segments"): a
+// lattice with a straight vacancy segment, relaxed, and its Delta(2)-inflation; a lattice with a
+// whole line of vacancies, one of them jogged off the line. Each is a rule in k: the enumeration
+// is over every such vacancy set of the lattice up to symmetry, and no stored packing is read.
 #include <stdexcept>
 
 #include "constructors/registry.hpp"
@@ -54,8 +54,14 @@ Pattern build_inflated_segment(const BuilderCall& c) {
   return relax_to_pattern(*inflated, exhaustive);
 }
 
+// Delta(rows) minus the best jogged line `line` lines from a wall.
+Pattern build_jogged_line(const BuilderCall& c) {
+  return best_jogged_line(c.arg("rows"), c.arg("line"), segment_search(c)).pattern;
+}
+
 const BuilderRegistration kVacancySegment{"vacancy-segment", build_vacancy_segment};
 const BuilderRegistration kInflatedSegment{"inflated-segment", build_inflated_segment};
+const BuilderRegistration kJoggedLine{"jogged-line", build_jogged_line};
 
 }  // namespace
 

@@ -212,12 +212,48 @@ struct SegmentRelax {
 
 }  // namespace
 
+std::vector<std::vector<Site>> jogged_lines(long rows, long distance) {
+  std::vector<std::vector<Site>> out;
+  if (distance < 1 || rows - distance < 2) return out;
+  // The line i = distance (parallel to the wall i = 0; the rotations carry the other two walls'
+  // lines onto it), from the bottom wall to the right one.
+  std::vector<Site> line;
+  for (long j = 0; distance + j < rows; ++j) line.push_back({distance, j});
+  // A site's neighbours off its line: two on the line further in, two on the line nearer the
+  // wall (the wall's own line when distance = 1).
+  static constexpr Site kOff[4] = {{1, 0}, {1, -1}, {-1, 0}, {-1, 1}};
+  std::set<std::vector<Site>> seen;
+  for (std::size_t a = 0; a < line.size(); ++a)
+    for (const Site& step : kOff) {
+      const Site moved{line[a].i + step.i, line[a].j + step.j};
+      if (moved.j < 0 || moved.i + moved.j >= rows) continue;
+      std::vector<Site> set = line;
+      set[a] = moved;
+      if (seen.insert(canonical_vacancies(rows, set)).second) out.push_back(set);
+    }
+  return out;
+}
+
 SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search) {
   if (vacancies < 1 || vacancies >= rows)
     throw std::invalid_argument("a vacancy segment of " + std::to_string(vacancies) +
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
                                 " rows with a disk left on it");
-  auto segments = straight_segments(rows, vacancies);
+  return best_vacancy_set(rows, straight_segments(rows, vacancies), search);
+}
+
+SegmentChoice best_jogged_line(long rows, long distance, const SegmentSearch& search) {
+  if (distance < 1 || rows - distance < 2)
+    throw std::invalid_argument("no lattice line of 2 or more sites lies " +
+                                std::to_string(distance) + " lines from a wall of the " +
+                                std::to_string(rows) + "-row lattice");
+  return best_vacancy_set(rows, jogged_lines(rows, distance), search);
+}
+
+SegmentChoice best_vacancy_set(long rows, std::vector<std::vector<Site>> segments,
+                               const SegmentSearch& search) {
+  if (segments.empty()) throw std::invalid_argument("no vacancy set to relax");
+  const long vacancies = static_cast<long>(segments.front().size());
   const long n = triangular(rows) - vacancies;
   // Up to all_segments_up_to disks every candidate is relaxed as the exhaustive enumeration
   // relaxes it (0.05-0.3 s each there): the fast relaxes ended elsewhere on the degenerate

@@ -91,10 +91,24 @@ struct SegmentSearch {
 };
 struct SegmentChoice {
   Pattern pattern;
-  std::vector<Site> vacancies;  // the winning segment
+  std::vector<Site> vacancies;  // the winning segment (vacancy set)
   std::size_t segments = 0;     // how many were relaxed from the exact lattice
   std::size_t restarts = 0;     // how many jittered restarts were relaxed
 };
 SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search = {});
+
+// The same enumeration over any list of vacancy sets of one size (relaxed in the list's order;
+// the densest of its ranking wins, as above). Throws std::invalid_argument on an empty list.
+SegmentChoice best_vacancy_set(long rows, std::vector<std::vector<Site>> sets,
+                               const SegmentSearch& search = {});
+
+// Jogged lines: the whole lattice line `distance` lines from a wall (rows - distance sites,
+// from wall to wall), with one of its sites moved to a neighbouring site off the line, one set
+// per orbit of the 6 symmetries (at most 4 (rows - distance) of them). Empty unless
+// distance >= 1 and the line has 2 or more sites. The bests of n = 81, 94, 139 and 257..259 are
+// such a set (docs/findings.md §11): the `distance` lines between the wall and the vacancies hold
+// `distance` more disks than Delta(rows - 1) fits there, squeezed.
+std::vector<std::vector<Site>> jogged_lines(long rows, long distance);
+SegmentChoice best_jogged_line(long rows, long distance, const SegmentSearch& search = {});
 
 }  // namespace tripack::patterns

@@ -26,13 +26,10 @@ for r in csv.DictReader(open(a.atlas)):
                          if m.startswith("search"))
     conf = int(r["confirmations"])
     builder = "builder" in r["source"]
-    by = []
-    if builder:
-        by.append("a builder's packing")
-    if conf - builder > 0:
-        by.append(f"{conf - builder} unit{'s' if conf - builder > 1 else ''}")
-    rows.append((n, f"reached by {' and '.join(by)} of the {total} independent units run at "
-                    f"n = {n} (search chains: {searches or 'none'}); next round: {a.next}"))
+    reached = conf - builder
+    rows.append((n, f"reached by {'a builder and ' if builder else ''}{reached} of the {total} "
+                    f"independent units run at n = {n} (search chains: {searches or 'none'}); "
+                    f"next round: {a.next}"))
 with open(a.out, "w", newline="") as f:
     w = csv.writer(f, lineterminator="\n")
     w.writerow(["n", "why"])

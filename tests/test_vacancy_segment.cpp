@@ -1,5 +1,6 @@
-// The discovered classes vacancy-segment and inflated-segment (patterns/; docs/findings.md §11):
-// lattices with a straight vacancy segment, relaxed, and their Delta(2)-inflations, built for any
+// The discovered classes vacancy-segment, inflated-segment and jogged-line (patterns/;
+// docs/findings.md §11): lattices with a straight vacancy segment, relaxed, their
+// Delta(2)-inflations, and lattices without a whole line but one site moved off it, built for any
 // k without reading a stored packing, reproduce the atlas's bests.
 #include <gtest/gtest.h>
 
@@ -166,6 +167,67 @@ TEST(VacancySegment, SegmentsAreCountedOncePerSymmetryOrbit) {
 TEST(VacancySegment, RefusesASegmentThatFillsALine) {
   EXPECT_THROW(patterns::best_vacancy_segment(4, 4), std::invalid_argument);
   EXPECT_THROW(patterns::lattice_with_vacancies(4, {{3, 1}}), std::invalid_argument);
+}
+
+TEST(JoggedLine, ReproducesBestsOfTheSearchesAndTheOpenTwentyThree) {
+  // 23 = Delta(7) - 5: one of GL1995's open n (Sec.6), whose best's vacancies are no straight
+  // segment (docs/findings.md §11); 81 = Delta(13) - 10: the line 3 lines from a wall with its
+  // fourth site moved in. Both values are billiards' and search chains' (data/atlas.csv).
+  expect_reproduces({"jogged-line", 5, 2, "t23a", 0.175153309170524826717235248722L, 52, 1});
+  expect_reproduces({"jogged-line", 10, 3, "t81a", 0.0859904727221818892475505798214L, 206, 2});
+}
+
+TEST(JoggedLine, BuildsA110DenserThanTheSearches) {
+  // The best that billiards and search chains had reached at 110 (data/atlas.csv before this
+  // class) has d = 0.0729432692473730649128; the line 5 lines from a wall of Delta(15), one site
+  // moved, gives a certified packing 1.0e-8 denser (docs/findings.md §11).
+  const auto b = pipeline::build_and_certify(catalogue(), {"jogged-line", 10, 5, ""}, {});
+  ASSERT_TRUE(b.analysis);
+  EXPECT_TRUE(b.verified()) << b.analysis->status();
+  const Packing& p = b.analysis->pattern.packing;
+  ASSERT_EQ(p.size(), 110u);
+  EXPECT_GT(p.d, 0.0729432692473730649128L * (1 + 5e-9L));
+  // The packing itself: every pair at least d apart, every centre in the triangle (1e-18 polish).
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GE(norm(p.points[i] - p.points[j]), p.d * (1 - 1e-17L)) << i << " " << j;
+    for (Side s : kSides) EXPECT_GE(wall_distance(p.points[i], s, 1.0L), -1e-17L) << i;
+  }
+}
+
+TEST(JoggedLine, SetsAreTheWholeLineWithOneSiteMovedOffItOncePerOrbit) {
+  const long rows = 9, distance = 3, length = rows - distance;
+  const auto sets = patterns::jogged_lines(rows, distance);
+  ASSERT_FALSE(sets.empty());
+  EXPECT_LE(sets.size(), static_cast<std::size_t>(4 * length));
+  std::set<std::vector<patterns::Site>> keys;
+  for (const auto& set : sets) {
+    keys.insert(patterns::canonical_vacancies(rows, set));
+    ASSERT_EQ(set.size(), static_cast<std::size_t>(length));
+    // All but one site on the line i = distance; the other on a neighbouring line, a lattice
+    // neighbour of the line's one site left occupied.
+    std::vector<patterns::Site> off;
+    std::set<long> on_rows;
+    for (const auto& s : set) {
+      EXPECT_TRUE(s.i >= 0 && s.j >= 0 && s.i + s.j < rows);
+      if (s.i == distance)
+        on_rows.insert(s.j);
+      else
+        off.push_back(s);
+    }
+    ASSERT_EQ(off.size(), 1u);
+    long left = -1;
+    for (long j = 0; j < length; ++j)
+      if (!on_rows.count(j)) left = j;
+    const long di = off[0].i - distance, dj = off[0].j - left;
+    const bool neighbour = (di == 1 && (dj == 0 || dj == -1)) || (di == -1 && (dj == 0 || dj == 1));
+    EXPECT_TRUE(neighbour) << off[0].i << "," << off[0].j << " for (" << distance << "," << left
+                           << ")";
+  }
+  EXPECT_EQ(keys.size(), sets.size());
+  EXPECT_TRUE(patterns::jogged_lines(5, 4).empty());  // a line of one site
+  EXPECT_TRUE(patterns::jogged_lines(5, 0).empty());  // the wall's own line
+  EXPECT_THROW(patterns::best_jogged_line(5, 0), std::invalid_argument);
 }
 
 }  // namespace
