@@ -41,6 +41,16 @@ void expect_reproduces(const AtlasBest& best) {
   EXPECT_EQ(b.analysis->pattern.rattlers.size(), best.rattlers) << best.label;
 }
 
+// The packing itself, not its reported d: every pair at least d apart and every centre in the
+// unit triangle, to the long double polish's 1e-18.
+void expect_no_overlap(const Packing& p) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GE(norm(p.points[i] - p.points[j]), p.d * (1 - 1e-17L)) << i << " " << j;
+    for (Side s : kSides) EXPECT_GE(wall_distance(p.points[i], s, 1.0L), -1e-17L) << i;
+  }
+}
+
 TEST(VacancySegment, ReproducesTheWinnersOfDeltaKPlusTwoMinusTwo) {
   // GL1995 could not confirm a winner for Delta(k+2)-2; docs/class6.md found three competing
   // patterns (C2: t26a, S: t43a, C4: t53a). All are a divacancy, placed differently.
@@ -74,13 +84,7 @@ TEST(VacancySegment, BuildsA48DenserThanTheAtlas) {
   const Packing& p = b.analysis->pattern.packing;
   ASSERT_EQ(p.size(), 48u);
   EXPECT_GT(p.d, 0.114820002270213543567L * (1 + 3e-5L));
-  // The packing itself, not its reported d: every pair at least d apart and every centre in the
-  // unit triangle, to the long double polish's 1e-18.
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j)
-      EXPECT_GE(norm(p.points[i] - p.points[j]), p.d * (1 - 1e-17L)) << i << " " << j;
-    for (Side s : kSides) EXPECT_GE(wall_distance(p.points[i], s, 1.0L), -1e-17L) << i;
-  }
+  expect_no_overlap(p);
 }
 
 TEST(VacancySegment, CertifiesAMemberAboveTheLpRelaxLimit) {
@@ -187,12 +191,7 @@ TEST(JoggedLine, BuildsA110DenserThanTheSearches) {
   const Packing& p = b.analysis->pattern.packing;
   ASSERT_EQ(p.size(), 110u);
   EXPECT_GT(p.d, 0.0729432692473730649128L * (1 + 5e-9L));
-  // The packing itself: every pair at least d apart, every centre in the triangle (1e-18 polish).
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j)
-      EXPECT_GE(norm(p.points[i] - p.points[j]), p.d * (1 - 1e-17L)) << i << " " << j;
-    for (Side s : kSides) EXPECT_GE(wall_distance(p.points[i], s, 1.0L), -1e-17L) << i;
-  }
+  expect_no_overlap(p);
 }
 
 TEST(JoggedLine, SetsAreTheWholeLineWithOneSiteMovedOffItOncePerOrbit) {
