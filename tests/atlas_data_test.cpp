@@ -71,10 +71,9 @@ std::vector<Row> read_table() {
   if (!in) throw std::runtime_error("cannot read " + (data_dir() / "atlas.csv").string());
   std::string line;
   std::getline(in, line);
-  const std::vector<std::string> header{"n",         "rank",          "label",  "d",
-                                        "L",         "delta",         "bonds",  "rattlers",
-                                        "certified", "confirmations", "source", "file",
-                                        "provenance"};
+  const std::vector<std::string> header{
+      "n",        "rank",      "label",         "d",      "L",    "delta",     "bonds",
+      "rattlers", "certified", "confirmations", "source", "file", "provenance"};
   if (fields_of(line) != header) throw std::runtime_error("atlas.csv: unexpected header " + line);
   std::vector<Row> rows;
   while (std::getline(in, line)) {
