@@ -51,6 +51,19 @@ void expect_no_overlap(const Packing& p) {
   }
 }
 
+// A member certified, verified, of n disks, denser than the searches' best by `gain` (relative),
+// and with no overlap.
+void expect_denser_than_the_searches(const BuildRequest& member, std::size_t n,
+                                     long double searches_d, long double gain) {
+  const auto b = pipeline::build_and_certify(catalogue(), member, {});
+  ASSERT_TRUE(b.analysis);
+  EXPECT_TRUE(b.verified()) << b.analysis->status();
+  const Packing& p = b.analysis->pattern.packing;
+  ASSERT_EQ(p.size(), n);
+  EXPECT_GT(p.d, searches_d * (1 + gain));
+  expect_no_overlap(p);
+}
+
 TEST(VacancySegment, ReproducesTheWinnersOfDeltaKPlusTwoMinusTwo) {
   // GL1995 could not confirm a winner for Delta(k+2)-2; docs/class6.md found three competing
   // patterns (C2: t26a, S: t43a, C4: t53a). All are a divacancy, placed differently.
@@ -78,13 +91,8 @@ TEST(VacancySegment, BuildsA48DenserThanTheAtlas) {
   // The best any search from random found at 48 (105 billiards runs; data/atlas.csv's t48a until
   // the builders' records were merged) has d = 0.114820002270213543567; the 7-site segment of
   // Delta(10) gives a certified packing 3.3e-5 denser (docs/findings.md §11).
-  const auto b = pipeline::build_and_certify(catalogue(), {"vacancy-segment", 3, 7, ""}, {});
-  ASSERT_TRUE(b.analysis);
-  EXPECT_TRUE(b.verified()) << b.analysis->status();
-  const Packing& p = b.analysis->pattern.packing;
-  ASSERT_EQ(p.size(), 48u);
-  EXPECT_GT(p.d, 0.114820002270213543567L * (1 + 3e-5L));
-  expect_no_overlap(p);
+  expect_denser_than_the_searches({"vacancy-segment", 3, 7, ""}, 48, 0.114820002270213543567L,
+                                  3e-5L);
 }
 
 TEST(VacancySegment, CertifiesAMemberAboveTheLpRelaxLimit) {
@@ -185,13 +193,8 @@ TEST(JoggedLine, BuildsA110DenserThanTheSearches) {
   // The best that billiards and search chains had reached at 110 (data/atlas.csv before this
   // class) has d = 0.0729432692473730649128; the line 5 lines from a wall of Delta(15), one site
   // moved, gives a certified packing 1.0e-8 denser (docs/findings.md §11).
-  const auto b = pipeline::build_and_certify(catalogue(), {"jogged-line", 10, 5, ""}, {});
-  ASSERT_TRUE(b.analysis);
-  EXPECT_TRUE(b.verified()) << b.analysis->status();
-  const Packing& p = b.analysis->pattern.packing;
-  ASSERT_EQ(p.size(), 110u);
-  EXPECT_GT(p.d, 0.0729432692473730649128L * (1 + 5e-9L));
-  expect_no_overlap(p);
+  expect_denser_than_the_searches({"jogged-line", 10, 5, ""}, 110, 0.0729432692473730649128L,
+                                  5e-9L);
 }
 
 TEST(JoggedLine, SetsAreTheWholeLineWithOneSiteMovedOffItOncePerOrbit) {
