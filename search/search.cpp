@@ -145,11 +145,13 @@ long double clearance(const Packing& p, Vec2L q, std::size_t skip) {
   return std::sqrt(best);
 }
 
-// What every chain starts from when the request names builders: the builder's certified packing
-// and its best candidates, and what building them cost.
+// What every chain starts from when the request names builders: the builder's packing and its
+// best candidates, and what building them cost.
 struct HeadStart {
-  std::optional<PackingRecord> record;  // certified
-  std::vector<Packing> starts;          // densest first
+  // Kept even when its certificate declined (a degenerate maximum, docs/certified.md): a
+  // search never returns less than the builder, and the record's flag says what is proven.
+  std::optional<PackingRecord> record;
+  std::vector<Packing> starts;  // densest first
   double seconds = 0, cpu_seconds = 0;
 };
 
@@ -300,8 +302,8 @@ class Chain {
     members_.push_back({p, 0});
   }
 
-  // The builder's packing is the best to beat from the first step (already certified: not
-  // analysed again), and its candidates are members.
+  // The builder's packing is the best to beat from the first step (already analysed by the
+  // build: not again), and its candidates are members.
   void start_from(const HeadStart& head) {
     if (head.record) {
       best_d_ = head.record->d.value();
@@ -309,7 +311,8 @@ class Chain {
       summary_.best_d = head.record->d.str(kLongDoubleDigits);
       summary_.seconds_to_best = head.seconds;
       summary_.cpu_seconds_to_best = head.cpu_seconds;
-      if (request_.target && best_d_ >= *request_.target * (1 - kTargetTolerance)) {
+      if (head.record->certified && request_.target &&
+          best_d_ >= *request_.target * (1 - kTargetTolerance)) {
         summary_.target_reached = true;
         summary_.seconds_to_target = head.seconds;
         summary_.cpu_seconds_to_target = head.cpu_seconds;
@@ -611,7 +614,7 @@ HeadStart build_head_start(const SearchRequest& request, BuilderStart& summary) 
     summary.member = pipeline::member_name(built.best.pattern.provenance);
     summary.d = record.d.str(kLongDoubleDigits);
     summary.certified = record.certified;
-    if (record.certified) head.record = record;
+    head.record = record;
     head.starts.push_back(built.best.pattern.packing);
     for (Packing& p : built.runners_up) head.starts.push_back(std::move(p));
     summary.candidates = static_cast<int>(head.starts.size());

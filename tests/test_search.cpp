@@ -147,6 +147,24 @@ TEST(Search, StartsFromTheBuilderAndNeverReturnsLess) {
   EXPECT_FALSE(search::run_search(r).builder.has_value());
 }
 
+// Where the builder's certificate declines (197's vacancy-segment packing is a degenerate
+// maximum: docs/certified.md), the search still returns it, flagged uncertified, rather than
+// less: with no step taken, the result is the builder's packing and nothing else.
+TEST(Search, KeepsTheBuildersPackingWhenItsCertificateDeclines) {
+  const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
+  search::SearchRequest r = request(197, 0, 1);
+  r.seconds = 1e-3;  // spent by the build: no step
+  r.builders = &catalogue;
+  const search::SearchResult result = search::run_search(r);
+  ASSERT_TRUE(result.builder.has_value());
+  ASSERT_FALSE(result.builder->certified);
+  ASSERT_EQ(result.packings.size(), 1u);
+  // builder->d is printed to long double's 18 digits: equal to 1e-17 relative.
+  const long double built = std::stold(result.builder->d);
+  EXPECT_NEAR(static_cast<double>(result.packings.front().d.value() / built), 1.0, 1e-17);
+  EXPECT_FALSE(result.packings.front().certified);
+}
+
 TEST(Search, RefusesBadRequests) {
   EXPECT_THROW(search::run_search(request(1, 5, 1)), std::invalid_argument);
   search::SearchRequest r = request(10, 5, 1);
