@@ -78,7 +78,7 @@ void render_csv(std::ostream& out, const BestBuild& b, const RenderOptions&) {
                 "certified", "exact_check", "seconds"});
   csv_row(out, {m.class_id, integer(m.k), m.p ? integer(m.p) : "", m.variant, integer(n),
                 r.d_string(std::max(r.digits, 17)), num(1 / pk.d), num(oler_delta(n, 1 / pk.d)),
-                integer(r.pattern.bonds.size()), integer(r.pattern.rattlers.size()),
+                integer(r.record.pattern.bonds.size()), integer(r.record.pattern.rattlers.size()),
                 r.analysis ? flag(r.analysis->certified()) : "", r.exact ? flag(r.exact->ok) : "",
                 num(r.seconds())});
 }

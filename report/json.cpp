@@ -127,7 +127,7 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
   j["L"] = b.digits > kLongDoubleDigits && b.record.L.multiprecision() ? b.record.L.str(b.digits)
                                                                        : decimal17(L);
   j["delta"] = static_cast<double>(oler_delta(n, L));
-  add_counts(j, b.pattern);
+  add_counts(j, b.record.pattern);  // the certified geometry's where certified (BuildResult)
   j["bonds_expected"] = b.bonds_expected ? json(*b.bonds_expected) : json(nullptr);
   j["rattlers_expected"] = b.rattlers_expected ? json(*b.rattlers_expected) : json(nullptr);
   j["seconds"] = b.seconds();

@@ -227,8 +227,9 @@ void build_lines(std::ostream& out, const BuildResult& b) {
   line(out, "d", b.d_string(b.digits));
   line(out, "L", L);
   line(out, "delta(n)", delta);
-  line(out, "bonds", count_vs(b.pattern.bonds.size(), b.bonds_expected));
-  line(out, "rattlers", count_vs(b.pattern.rattlers.size(), b.rattlers_expected));
+  // The build's result (the certified geometry's where certified), as the catalogue counts it.
+  line(out, "bonds", count_vs(b.record.pattern.bonds.size(), b.bonds_expected));
+  line(out, "rattlers", count_vs(b.record.pattern.rattlers.size(), b.rattlers_expected));
   if (b.polished) {
     const std::string rank = b.polish.rank < 0
                                  ? std::string("not needed")
