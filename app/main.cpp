@@ -89,6 +89,10 @@ class CliOptions : public OptionList {
   Handle& flag(const std::string& n, bool& f, const std::string& h) override {
     return keep(app_->add_flag(n, f, h));
   }
+  Handle& flag_action(const std::string& n, std::function<void()> act,
+                      const std::string& h) override {
+    return keep(app_->add_flag_callback(n, std::move(act), h));
+  }
   Handle& parsed(const std::string& n, std::function<void(const std::string&)> set,
                  const std::string& shown_default, const std::string& h) override {
     auto* o = app_->add_option_function<std::string>(n, std::move(set), h);
@@ -97,17 +101,11 @@ class CliOptions : public OptionList {
   }
 };
 
-bool wants_json(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--json") return true;
-  return false;
-}
-
-// One line on stderr; with --json also {"error": ...} on stdout, so a program reading stdout
-// always gets one JSON object.
-int fail(const std::string& message, bool json, int code) {
+// One line on stderr; in JSON or CSV also the error on stdout in that format, so a program
+// reading stdout always gets what it asked for (commands/help.hpp).
+int fail(const std::string& message, const std::string& format, int code) {
   std::cerr << "tripack: error: " << message << "\n";
-  if (json) std::cout << commands::error_json(message);
+  std::cout << commands::error_output(message, format) << std::flush;
   return code;
 }
 
@@ -200,7 +198,7 @@ int main(int argc, char** argv) {
     b.command->declare(*options.back());
     bound.push_back(std::move(b));
   }
-  const bool json = wants_json(argc, argv);
+  const std::string format = commands::requested_format(argc, argv);
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -208,9 +206,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return cli.exit(e);
   } catch (const CLI::ParseError& e) {
-    return fail(e.what(), json, 2);
+    return fail(e.what(), format, 2);
   } catch (const std::exception& e) {  // an option's own parse (a range, a convention)
-    return fail(e.what(), json, 2);
+    return fail(e.what(), format, 2);
   }
   CancelToken cancel;  // outlives the signal thread: main never returns before exit
   try {
@@ -223,7 +221,7 @@ int main(int argc, char** argv) {
       return b.command->run(context);
     }
   } catch (const std::exception& e) {
-    return fail(e.what(), json, 1);
+    return fail(e.what(), format, 1);
   }
   return 0;
 }

@@ -16,19 +16,27 @@ Catalogue load_catalogue(const Context& context) {
   return Catalogue::load(context.catalogue.empty() ? Catalogue::default_path() : context.catalogue);
 }
 
+void Output::choose(const std::string& format, const std::string& given_as) {
+  bool known = false;
+  for (const auto& w : report::output_writers()) known = known || w.format == format;
+  if (!known)
+    throw std::invalid_argument("--output-format must be one of " + report::output_format_names() +
+                                ", not '" + format + "'");
+  if (!name.empty() && name != format)
+    throw std::invalid_argument(given_as + " asks for " + format + " output, but " + name +
+                                " was asked for already: give one format");
+  name = format;
+}
+
 void Output::declare(OptionList& o, bool with_points) {
-  o.flag("--json", json, "print one JSON object");
-  o.flag("--csv", csv, "print CSV (a header, then rows)");
+  o.flag_action(
+      "--json", [this] { choose("json", "--json"); },
+      "print one JSON object (the same as --output-format json)");
+  o.flag_action(
+      "--csv", [this] { choose("csv", "--csv"); },
+      "print CSV, a header then rows (the same as --output-format csv)");
   o.parsed(
-      "--output-format",
-      [this](const std::string& s) {
-        bool known = false;
-        for (const auto& w : report::output_writers()) known = known || w.format == s;
-        if (!known)
-          throw std::invalid_argument("--output-format must be one of " +
-                                      report::output_format_names() + ", not '" + s + "'");
-        name = s;
-      },
+      "--output-format", [this](const std::string& s) { choose(s, "--output-format " + s); },
       "text", "print the result as " + report::output_format_names());
   if (with_points) o.flag("--points", points, "with --json: every packing's coordinates");
 }

@@ -21,16 +21,15 @@ namespace tripack::commands {
 
 Catalogue load_catalogue(const Context& context);
 
-// --json / --csv / --output-format NAME / --points: how the result is printed.
+// --output-format NAME (--json and --csv are its aliases) / --points: how the result is printed.
 struct Output {
-  bool json = false, csv = false;
-  std::string name;     // --output-format: a writer of report/described.hpp's table
+  std::string name;     // a writer of report/described.hpp's table; empty: text
   bool points = false;  // JSON: with coordinates
   void declare(OptionList& o, bool with_points = false);
+  // Two different formats asked for (--json --csv) are an error, not a silent choice.
+  void choose(const std::string& format, const std::string& given_as);
   // text, json or csv: the result's own view; any other writer: its description.
-  std::string format_name() const {
-    return json ? "json" : (csv ? "csv" : (name.empty() ? "text" : name));
-  }
+  std::string format_name() const { return name.empty() ? "text" : name; }
   report::OutputFormat format() const {
     const std::string f = format_name();
     return f == "json" ? report::OutputFormat::Json

@@ -1,8 +1,10 @@
 #include "commands/help.hpp"
 
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "formats/formats.hpp"
+#include "report/described.hpp"
 #include "report/render.hpp"
 
 namespace tripack::commands {
@@ -18,10 +20,30 @@ std::string help_footer() {
   return text + "Every command: tripack COMMAND --help. Manual: docs/cli.md.";
 }
 
-std::string error_json(const std::string& message) {
+std::string error_output(const std::string& message, const std::string& format) {
   std::ostringstream out;
-  report::render_error_json(out, message);
+  if (format == "json") {
+    report::render_error_json(out, message);
+  } else if (format != "text") {
+    try {
+      report::write_description(out, report::Tree{{"error", message}}, format);
+    } catch (const std::exception&) {  // an unknown format: the error line on stderr says so
+      return "";
+    }
+  }
   return out.str();
+}
+
+std::string requested_format(int argc, const char* const* argv) {
+  const std::string prefix = "--output-format=";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--json") return "json";
+    if (arg == "--csv") return "csv";
+    if (arg == "--output-format" && i + 1 < argc) return argv[i + 1];
+    if (arg.rfind(prefix, 0) == 0) return arg.substr(prefix.size());
+  }
+  return "text";
 }
 
 }  // namespace tripack::commands

@@ -1,5 +1,5 @@
 // What the command line prints around the commands: the help's footer (the packing-file formats,
-// listed from the format table) and an error as one JSON object.
+// listed from the format table) and an error in the output format the command was asked for.
 #pragma once
 
 #include <string>
@@ -7,6 +7,11 @@
 namespace tripack::commands {
 
 std::string help_footer();
-std::string error_json(const std::string& message);  // {"error": message} and a line break
+// What stdout gets of an error: {"error": message} for json, a one-column table for csv,
+// nothing for text (the error line is on stderr in every format).
+std::string error_output(const std::string& message, const std::string& format);
+// The format a command line asks for (--json, --csv, --output-format NAME or =NAME), read before
+// parsing so that a parse error follows it too; "text" when none.
+std::string requested_format(int argc, const char* const* argv);
 
 }  // namespace tripack::commands

@@ -33,10 +33,12 @@ class Explore : public Command {
   jobs::ExploreSettings settings;
   std::string out = "out/report";
   std::string atlas;  // empty: the installed atlas when there is one; "none": no atlas
+  Output summary;     // how the closing summary is printed (the report directory is the result)
 
  public:
   void declare(OptionList& o) override {
     settings.declare(o);
+    summary.declare(o);
     o.option("--out", out, "report directory");
     o.option("--atlas", atlas,
              "atlas.csv to show beside the exploration (default: the installed atlas when "
@@ -92,7 +94,7 @@ class Explore : public Command {
                      .number("comparisons", std::to_string(result.comparisons.size()))
                      .number("seconds", fmt::format("{:.1f}", result.seconds))
                      .text("report", (dir / "index.html").string()),
-                 Output{});
+                 summary);
     return result.interrupted ? cancelled("the report holds what finished") : 0;
   }
 };

@@ -36,6 +36,9 @@ class OptionList {
                          const std::string& help) = 0;
   // "--name" sets the field; "!--no-name" clears it (the field's initial value is the default).
   virtual Handle& flag(const std::string& names, bool& field, const std::string& help) = 0;
+  // A flag that runs `act` when given (its std::exception is the one-line error).
+  virtual Handle& flag_action(const std::string& names, std::function<void()> act,
+                              const std::string& help) = 0;
   // A value parsed by `set` (its std::exception is the one-line error), shown as `shown_default`.
   virtual Handle& parsed(const std::string& names, std::function<void(const std::string&)> set,
                          const std::string& shown_default, const std::string& help) = 0;

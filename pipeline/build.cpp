@@ -72,6 +72,14 @@ void tell_stage(const BuildSettings& settings, const char* stage) {
 // Construct, polish the builder's bonds, the exact check: what every candidate of build --n needs.
 BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& request,
                              const BuildSettings& settings) {
+  // Refused before any allocation: a member of a million disks took 7 to 19 GB
+  // (docs/performance.md, "10^6 disks"), so a k far beyond that is one line, not an abort.
+  const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
+  if (n > kMaxBuildDisks)
+    throw std::invalid_argument(fmt::format(
+        "{} k={}{} has {} disks; a build handles at most {} (about 20 GB per million disks)",
+        request.class_id, request.k, request.p ? fmt::format(" p={}", request.p) : "", n,
+        kMaxBuildDisks));
   BuildResult b;
   tell_stage(settings, "construct");
   b.pattern = timed(b.times.construct, [&] {

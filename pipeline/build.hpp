@@ -43,6 +43,9 @@ struct BuildSettings {
 // The whole pipeline on a class member: construct, polish the builder's bond system, verify
 // closed forms exactly, then certify from the geometry alone and compare with what the builder
 // intended.
+// The largest member a build takes on (memory: docs/performance.md, "10^6 disks").
+inline constexpr long long kMaxBuildDisks = 2'000'000;
+
 struct BuildResult {
   Pattern pattern;  // as constructed, polished with the builder's bonds
   PolishReport polish;

@@ -1,5 +1,6 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <stdexcept>
 #include <string>
 
 #include "core/io.hpp"
@@ -7,13 +8,16 @@
 
 namespace tripack::report {
 
-// CSV: a header of the top-level scalar fields and one row of their values (nested fields are
-// left to the other formats).
+// CSV: a header of the top-level fields and one row of their values. A nested field has no
+// column: the tree is refused whole rather than written without it.
 void write_csv_tree(std::ostream& out, const Tree& description) {
+  for (const auto& [key, value] : description.items())
+    if (value.is_structured())
+      throw std::invalid_argument("CSV cannot hold the nested field '" + key +
+                                  "' of this result: use --output-format json");
   std::string header, row;
   bool first = true;
   for (const auto& [key, value] : description.items()) {
-    if (value.is_structured()) continue;
     if (!first) {
       header += ',';
       row += ',';

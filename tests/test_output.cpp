@@ -21,8 +21,15 @@ TEST(Output, EveryWriterRendersAResultFromItsJsonFields) {
   std::ostringstream json;
   report::render(json, pipeline::classify(Catalogue::load(TRIPACK_DEFAULT_CATALOGUE), 22),
                  report::OutputFormat::Json);
+  // Every writer renders it, except CSV, whose one row cannot hold the nested list of members:
+  // it refuses the tree rather than writing it without them.
   for (const auto& writer : report::output_writers()) {
     std::ostringstream out;
+    if (writer.format == "csv") {
+      EXPECT_THROW(report::write_json_description(out, json.str(), writer.format),
+                   std::invalid_argument);
+      continue;
+    }
     report::write_json_description(out, json.str(), writer.format);
     EXPECT_FALSE(out.str().empty()) << writer.format;
   }
