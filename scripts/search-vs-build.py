@@ -4,10 +4,11 @@ from the builders"): for every N of --n, both are run as separate commands, and 
 is appended to --out (build's d and member, search's best d, the relative difference, whether it
 holds to 1e-15 relative). The search runs one thread for --seconds (its build counts in that
 budget, so a budget shorter than the build gives the builder's packing and no step).
-Resumable: N already in --out are skipped. Prints the count that hold and every N that does not.
+With --builds, build's row is read from that table (the same binary's builds, e.g.
+data/build-vs-atlas.csv) rather than run again. Resumable: N already in --out are skipped. Prints the count that hold and every N that does not.
 usage: python3 scripts/search-vs-build.py [--tripack build/tripack] [--n 2..300]
                                          [--seconds 0.001] [--out data/search-vs-build.csv]"""
-import argparse, json, subprocess, sys
+import argparse, csv, json, subprocess, sys
 from decimal import Decimal
 from resumable_table import n_values, open_table
 
@@ -16,11 +17,17 @@ ap.add_argument("--tripack", default="build/tripack")
 ap.add_argument("--n", default="2..300", help="a range A..B, or a list A,B,C")
 ap.add_argument("--seconds", default="0.001")
 ap.add_argument("--out", default="data/search-vs-build.csv")
+ap.add_argument("--builds", default="",
+                help="a table of build --n rows (scripts/build-vs-atlas.py's: n, builder, d, "
+                     "certified) used instead of running build again, for the n it has")
 a = ap.parse_args()
 wanted = n_values(a.n)
 FIELDS = ["n", "builder", "d_build", "certified_build", "d_search", "search_steps",
           "relative_difference", "holds"]
 done, out, writer = open_table(a.out, FIELDS)
+builds = {}
+if a.builds:
+    builds = {int(r["n"]): r for r in csv.DictReader(open(a.builds)) if r.get("d")}
 
 
 def run_json(args):
@@ -34,7 +41,14 @@ def run_json(args):
 for n in wanted:
     if n in done:
         continue
-    b = run_json([a.tripack, "build", "--n", str(n), "--json"])
+    if n in builds:
+        r = builds[n]
+        member = r["builder"].split(" variant=")[0]
+        b = {"d": r["d"], "certificate": {"certified": r["certified"] == "true"},
+             "class": member.split(" k=")[0], "k": member.split(" k=")[1].split(" ")[0],
+             "p": member.split(" p=")[1] if " p=" in member else None}
+    else:
+        b = run_json([a.tripack, "build", "--n", str(n), "--json"])
     s = run_json([a.tripack, "search", str(n), "--seconds", a.seconds, "--threads", "1",
                   "--seed", "1", "--json"])
     d_build = Decimal(b["d"])
