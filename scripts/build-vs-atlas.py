@@ -24,7 +24,7 @@ ap.add_argument("--redo", default="", help="n to run again although --out has th
 a = ap.parse_args()
 best = {int(r["n"]): r for r in csv.DictReader(open(a.atlas)) if r["rank"] == "1"}
 ns = [n for n in n_values(a.n) if n in best]
-FIELDS = ["n", "atlas_label", "atlas_d", "atlas_bonds", "builder", "d", "bonds", "rattlers",
+FIELDS = ["n", "atlas_label", "atlas_d", "atlas_bonds", "builder", "d", "bonds",
           "certified", "relative_gap", "same_packing", "reproduced", "note"]
 redo = set(n_values(a.redo)) if a.redo else set()
 if redo and os.path.exists(a.out):  # drop the rows to redo, keep the rest
@@ -92,7 +92,7 @@ for n in ns:
         if same_d and j["bonds"] != int(at["bonds"]):
             row["note"] = ("the same held disks, rattlers placed otherwise" if same
                            else "the same d, another packing")
-        row.update(builder=member, d=j["d"], bonds=j["bonds"], rattlers=j["rattlers"],
+        row.update(builder=member, d=j["d"], bonds=j["bonds"],
                    certified=str(certified).lower(), relative_gap=f"{gap:.2e}",
                    same_packing=str(same).lower(), reproduced=str(same and certified).lower())
     writer.writerow(row)

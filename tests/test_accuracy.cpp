@@ -1,4 +1,4 @@
-// pipeline/accuracy: digits of d against time (docs/accuracy.md) and the hard cases' stability.
+// jobs/accuracy: digits of d against time (docs/accuracy.md) and the hard cases' stability.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// analysis/polish_mp: the bond system polished in MPFR, checked against closed forms evaluated in
+// polish/polish_mp: the bond system polished in MPFR, checked against closed forms evaluated in
 // MPFR (the C API: a light header, unlike the Boost wrappers).
 #include <gtest/gtest.h>
 #include <mpfr.h>

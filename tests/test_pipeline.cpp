@@ -1,4 +1,4 @@
-// app/pipeline: analyze(build) for every class, conventions and input validation.
+// pipeline/: analyze(build) for every class, conventions and input validation.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// analysis/polish: Newton / Gauss-Newton on the bond system.
+// polish/polish: Newton / Gauss-Newton on the bond system.
 #include <gtest/gtest.h>
 
 #include <cmath>
