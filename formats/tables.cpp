@@ -33,12 +33,6 @@ const TableFormat& exact_atlas_table_format() {
   return f;
 }
 
-const std::vector<const TableFormat*>& table_formats() {
-  static const std::vector<const TableFormat*> all{
-      &atlas_table_format(), &atlas_gaps_table_format(), &exact_atlas_table_format()};
-  return all;
-}
-
 std::string table_line(const std::vector<std::string>& fields) {
   std::string line;
   for (std::size_t i = 0; i < fields.size(); ++i) {

@@ -19,7 +19,6 @@ struct TableFormat {
 const TableFormat& atlas_table_format();        // atlas.csv
 const TableFormat& atlas_gaps_table_format();   // atlas-gaps.csv
 const TableFormat& exact_atlas_table_format();  // atlas-exact.csv
-const std::vector<const TableFormat*>& table_formats();
 
 // One line of fields, with its line break.
 std::string table_line(const std::vector<std::string>& fields);
