@@ -44,7 +44,9 @@ PackingRecord record_of_build(const BuildResult& b) {
   } else {
     record = PackingRecord::of(b.pattern);
     if (b.multiprecision) apply_multiprecision(record, *b.multiprecision);
-    record.verdict = "not certified (certification skipped)";
+    record.verdict = b.certify_error.empty() ? "not certified (certification skipped)"
+                                             : "not certified: the certificate failed: " +
+                                                   b.certify_error;
     identify(record);
   }
   record.pattern.provenance = b.pattern.provenance;
@@ -123,7 +125,13 @@ void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSetting
         throw_if_cancelled(settings.cancel);
         if (settings.progress) settings.progress(p);
       };
-    b.analysis = analyze_packing(b.pattern.packing, options);
+    // A certificate that fails (CLP giving up on a relax step: 263's jogged-line winner) leaves
+    // the built packing uncertified with the reason, rather than losing it.
+    try {
+      b.analysis = analyze_packing(b.pattern.packing, options);
+    } catch (const std::runtime_error& e) {
+      b.certify_error = e.what();
+    }
   } else if (settings.digits > kLongDoubleDigits) {
     tell_stage(settings, "multiprecision polish");
     b.multiprecision = timed(b.times.multiprecision, [&] {

@@ -57,6 +57,7 @@ struct BuildResult {
   double polish_seconds = 0;
   std::optional<long long> bonds_expected, rattlers_expected;  // the catalogue's counts
   bool certify_skipped = false;
+  std::string certify_error;  // why the certificate failed (then no analysis); empty: it did not
   int digits = 15;
   // What the build gives, whichever stages ran: the certified geometry when certified (else the
   // builder's pattern), d and the coordinates to every digit known, the builder as its source.

@@ -142,6 +142,7 @@ json build_json(const BuildResult& b, const RenderOptions& o) {
     j["stage_seconds"]["multiprecision"] = b.times.multiprecision;
     j["certificate"] = nullptr;
     j["certify_skipped"] = b.certify_skipped;
+    if (!b.certify_error.empty()) j["certify_error"] = b.certify_error;
   }
   if (b.exact) j["exact_check"] = b.exact->ok;
   if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);

@@ -267,6 +267,8 @@ void build_lines(std::ostream& out, const BuildResult& b) {
   } else if (b.certify_skipped) {
     line(out, "certify",
          "skipped: it certifies the polished bond system, and --no-polish was given");
+  } else if (!b.certify_error.empty()) {
+    line(out, "certify", "FAILED: " + b.certify_error + " (the packing is built, not certified)");
   }
   if (b.multiprecision)
     line(out, "mpfr",
