@@ -26,7 +26,7 @@ WriteOptions file_digits(int digits) {
 void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
   auto& c = o.option("class", member.class_id, "class id (see 'tripack classes')");
   if (class_required) c.required();
-  o.option("--k", member.k, "class index k");
+  o.option("--k", member.k, "class index k").shown_default("");
   o.option("--p", member.p, "matrix row p").range(1, 1e9);
   o.option("--variant", member.variant, "variant (e.g. rattler, cavity-1, full)");
 }
@@ -47,7 +47,9 @@ class Build : public Command {
  public:
   void declare(OptionList& o) override {
     declare_member(o, member, false);
-    o.option("--n", n, "number of disks: build the catalogue's best class containing n");
+    o.option("--n", n,
+             "number of disks: build every catalogue member and variant containing n and certify "
+             "the densest (no class, --k, --p); the candidates are listed");
     settings.declare(o);
     o.option("-o,--output", output, "write the coordinates (" + format_names() + ", by extension)");
     out.declare(o, true);
@@ -152,7 +154,7 @@ class Draw : public Command {
  public:
   void declare(OptionList& o) override {
     o.option("what", what, "a points file (any layout of 'analyze') or a class id").required();
-    o.option("--k", member.k, "class index k");
+    o.option("--k", member.k, "class index k").shown_default("");
     o.option("--p", member.p, "matrix row p").range(1, 1e9);
     o.option("--variant", member.variant, "variant");
     o.parsed(

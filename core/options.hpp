@@ -20,6 +20,9 @@ class OptionList {
     virtual ~Handle() = default;
     virtual Handle& range(double min, double max) = 0;  // inclusive
     virtual Handle& required() = 0;
+    // What the help shows as the default instead of the field's initial value ("": none, for a
+    // field whose initial value only means "not given").
+    virtual Handle& shown_default(const std::string& text) = 0;
   };
 
   virtual ~OptionList() = default;

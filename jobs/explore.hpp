@@ -41,13 +41,21 @@ struct ExploreSettings {
   bool accuracy = true;  // the accuracy-against-time study and the hard cases (docs/accuracy.md)
 
   void declare(OptionList& o) {
-    o.option("--max-n", max_n, "class members up to this n").range(2, 100000);
-    o.option("--discovered-max-n", discovered_max_n,
-             "members of the discovered classes (vacancy segments) up to this n")
+    o.option(
+         "--max-n", max_n,
+         "class members up to this n (an exploration estimated above 5 minutes is warned about)")
         .range(2, 100000);
-    o.option("--search-steps", search_steps, "basin-hopping steps per chain for each n <= 60")
+    o.option("--discovered-max-n", discovered_max_n,
+             "members of the discovered classes (vacancy-segment, inflated-segment, jogged-line) "
+             "up to this n: each enumerates vacancy sets, seconds per member above 100 disks")
+        .range(2, 100000);
+    o.option("--search-steps", search_steps,
+             "basin-hopping steps per chain for each searched n (a step budget: the report does "
+             "not depend on the machine's speed)")
         .range(1, 1e8);
-    o.option("--billiards-max-n", billiards_max_n, "search every n = 2 .. this").range(2, 100000);
+    o.option("--billiards-max-n", billiards_max_n,
+             "search every n = 2 .. this (class members up to 60 disks are searched too)")
+        .range(2, 100000);
     o.option("--threads", threads, "parallel runs").range(1, 256);
     o.option("--seed", seed, "seed of run 0 (run r uses seed + r)");
     o.flag("!--no-accuracy", accuracy, "skip the accuracy-against-time study (~50 s)");
