@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """docs/cli.md's option tables are generated from the binary (`tripack --markdown-options`, the
 options as the command line binds them, with their help and defaults): this script splices each
-command's block into its section of the manual. --check (what tests/cli_doc_test.sh runs) exits 1
+command's block into its section of the manual. --check (what the cli_doc test runs) exits 1
 when the manual differs from what the binary generates, naming the commands that differ.
 The first run also replaced the hand-kept tables, one per command section, by the blocks.
 usage: python3 scripts/cli-doc.py [--tripack build/tripack] [--doc docs/cli.md] [--check]"""

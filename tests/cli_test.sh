@@ -428,7 +428,7 @@ chain = a["chains"][0]
 assert 0 <= chain["analysis_cpu_seconds"] <= chain["cpu_seconds"] and chain["analyses"] >= 1
 PY
 then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: search --no-lattice-starts"; fi
-# search never returns less than build --n (a sample; scripts/search-vs-build.py covers every
+# search never returns less than build --n (a sample; scripts/analysis/search-vs-build.py covers every
 # N <= 300): at 48 and 102 the builder's packings are denser than any search from random found.
 for n in 48 102; do
   b=$("$TRIPACK" build --n "$n" --json 2>/dev/null)

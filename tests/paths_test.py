@@ -13,9 +13,9 @@ ABSENT_ON_PURPOSE = {
     "constructors/hexagonal_minus_two.cpp": "docs/extending.md's worked example of a new class",
     "sim/effects/target.hpp": "docs/extending.md's worked example of a new effect",
     # outputs of scripts, written where the user runs them, not kept in git
-    "data/build-scan.csv": "scripts/build-scan.py's default output",
-    "data/atlas-rank1.csv": "made by scripts/exact-atlas-pass.sh each time",
-    "data/atlas-selected.csv": "made by scripts/exact-atlas-pass.sh each time",
+    "data/build-scan.csv": "scripts/analysis/build-scan.py's default output",
+    "data/atlas-rank1.csv": "made by scripts/data/exact-atlas-pass.sh each time",
+    "data/atlas-selected.csv": "made by scripts/data/exact-atlas-pass.sh each time",
     # what a test shows to be missing
     "tests/data/atlas": "tests/exact_checker_test.sh checks the checker without it",
 }

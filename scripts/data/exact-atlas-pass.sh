@@ -7,13 +7,13 @@
 # with TRIPACK= a copy of the binary: a rebuild under a running pass makes the later rows fail to
 # start (exit 126). For the same reason never edit this script in place while a pass runs (bash
 # reads a script as it goes): write the new version beside it and rename it over this one.
-# Usage: scripts/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
-#   e.g. scripts/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
+# Usage: scripts/data/exact-atlas-pass.sh ATLAS.csv FIRST_DIGITS DIGITS MAX_DEGREE SECONDS N...
+#   e.g. scripts/data/exact-atlas-pass.sh data/atlas.csv 500 2000 64 900 $(seq 2 200)
 # ATLAS.csv = rank1: only the best packing of each n (data/atlas.csv's rank-1 rows, written to
 # data/atlas-rank1.csv, which is not kept in git: it is made again from data/atlas.csv each time);
 # ATLAS.csv = labels=L1,L2,...: only those rows (data/atlas-selected.csv, not kept in git either).
 set -u
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 TRIPACK=${TRIPACK:-$root/build/tripack}
 atlas=$1 first=$2 digits=$3 degree=$4 seconds=$5
 shift 5

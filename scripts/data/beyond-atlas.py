@@ -7,7 +7,7 @@ per n is appended to --out at once (default data/beyond-atlas.csv); a rerun skip
 there, so an interrupted run continues where it stopped. Where the search wins, its packing is
 written to beyond-atlas/search-N.txt beside --out. A builder is a conjecture only where the
 search does not beat it: the row says which won and by how much.
-usage: python3 scripts/beyond-atlas.py [--tripack build/tripack] [--n A..B] [--seconds 60]
+usage: python3 scripts/data/beyond-atlas.py [--tripack build/tripack] [--n A..B] [--seconds 60]
                                        [--out FILE]"""
 import argparse, csv, json, os, subprocess, sys, time
 from decimal import Decimal

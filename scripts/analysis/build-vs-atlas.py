@@ -9,7 +9,7 @@ cage adds bonds without changing d). Builders never read the atlas, so this meas
 classes carry to any k.
 Resumable: one row per n is appended to --out (default data/build-vs-atlas.csv); n already there
 are skipped (--redo A,B re-runs them). Prints the count over --n and every n not reproduced.
-usage: python3 scripts/build-vs-atlas.py [--tripack build/tripack] [--atlas data/atlas.csv]
+usage: python3 scripts/analysis/build-vs-atlas.py [--tripack build/tripack] [--atlas data/atlas.csv]
                                          [--n A..B | A,B,C] [--out FILE] [--redo LIST]"""
 import argparse, csv, json, math, os, subprocess, sys
 from decimal import Decimal

@@ -4,7 +4,7 @@ rank-1 packing of n = 20..200 in data/atlas.csv is mapped onto the k-row triangu
 Delta(k) (k the smallest with Delta(k) >= n), each disk to its nearest site; when that is one to
 one, its m = Delta(k) - n empty sites are classed as one straight segment of a lattice line, a
 connected path of nearest neighbours, a path with second-neighbour jogs, or none of these.
-usage: python3 scripts/vacancy-lines.py [--atlas data/atlas.csv] [--list]"""
+usage: python3 scripts/analysis/vacancy-lines.py [--atlas data/atlas.csv] [--list]"""
 import argparse, csv, math, os
 
 NEAR = [(1, 0), (-1, 0), (0, 1), (0, -1), (1, -1), (-1, 1)]

@@ -3,14 +3,14 @@
 fewer than 3 confirmations, with why, from data/atlas.csv and the runs table of data/atlas.db:
 how many independent units ran at n (billiards runs and search chains from random starts;
 continued searches and those started from a builder's packing do not count) and what reached the best.
-usage: python3 scripts/atlas-unconfirmed.py [--next "CONFIRM_LONG_RUNS=24 bash scripts/atlas.sh confirm-long"]"""
+usage: python3 scripts/data/atlas-unconfirmed.py [--next "CONFIRM_LONG_RUNS=24 bash scripts/data/atlas.sh confirm-long"]"""
 import argparse, csv, sqlite3
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--atlas", default="data/atlas.csv")
 ap.add_argument("--db", default="data/atlas.db")
 ap.add_argument("--out", default="data/atlas-unconfirmed.csv")
-ap.add_argument("--next", default="CONFIRM_LONG_RUNS=24 bash scripts/atlas.sh confirm-long")
+ap.add_argument("--next", default="CONFIRM_LONG_RUNS=24 bash scripts/data/atlas.sh confirm-long")
 a = ap.parse_args()
 db = sqlite3.connect(f"file:{a.db}?mode=ro", uri=True)
 rows = []

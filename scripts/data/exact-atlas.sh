@@ -4,7 +4,7 @@
 # resumable (rerun the script: rows already in data/atlas-exact.csv are skipped). Prints each
 # pass's time. Env: TRIPACK (build/tripack), THREADS (2).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 TRIPACK=${TRIPACK:-build/tripack}
 THREADS=${THREADS:-2}
 start=$(date +%s)

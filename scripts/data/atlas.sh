@@ -6,13 +6,13 @@
 # (n, seed) already in the database, so an interrupted run (Ctrl-C, a killed session) continues
 # where it stopped, and a finished one costs only the atlas step (~2 min).
 #
-# Usage: bash scripts/atlas.sh [STEP ...]   steps: small large targeted stress beyond confirm
+# Usage: bash scripts/data/atlas.sh [STEP ...]   steps: small large targeted stress beyond confirm
 #        confirm-long prune atlas (default: all but confirm-long, in that order).
 #        Env: TRIPACK (build/tripack), THREADS (2), CONFIRM_RUNS (4), CONFIRM_LONG_RUNS (4).
 # Each step's wall and CPU time is appended to data/atlas-times.log; docs/atlas.md has the
 # totals measured on the project's 2-core machine.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 T=${TRIPACK:-build/tripack}
 THREADS=${THREADS:-2}
 DB=data/atlas.db

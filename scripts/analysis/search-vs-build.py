@@ -6,7 +6,7 @@ holds to 1e-15 relative). The search runs one thread for --seconds (its build co
 budget, so a budget shorter than the build gives the builder's packing and no step).
 With --builds, build's row is read from that table (the same binary's builds, e.g.
 data/build-vs-atlas.csv) rather than run again. Resumable: N already in --out are skipped. Prints the count that hold and every N that does not.
-usage: python3 scripts/search-vs-build.py [--tripack build/tripack] [--n 2..300]
+usage: python3 scripts/analysis/search-vs-build.py [--tripack build/tripack] [--n 2..300]
                                          [--seconds 0.001] [--out data/search-vs-build.csv]"""
 import argparse, csv, json, subprocess, sys
 from decimal import Decimal
@@ -18,7 +18,7 @@ ap.add_argument("--n", default="2..300", help="a range A..B, or a list A,B,C")
 ap.add_argument("--seconds", default="0.001")
 ap.add_argument("--out", default="data/search-vs-build.csv")
 ap.add_argument("--builds", default="",
-                help="a table of build --n rows (scripts/build-vs-atlas.py's: n, builder, d, "
+                help="a table of build --n rows (scripts/analysis/build-vs-atlas.py's: n, builder, d, "
                      "certified) used instead of running build again, for the n it has")
 a = ap.parse_args()
 wanted = n_values(a.n)

@@ -2,13 +2,13 @@
 """Is data/atlas.csv the best known? For every n of --n (default 2..300) its rank-1 d must be at
 least (1e-15 relative):
   * `build --n N`'s d, from a table of build rows (--builds, default data/search-vs-build.csv,
-    column d_build; scripts/search-vs-build.py writes it), and every certified class member's d
+    column d_build; scripts/analysis/search-vs-build.py writes it), and every certified class member's d
     from the atlas step's JSON (--atlas-json: data/logs/atlas.log);
   * every certified packing in the atlas's databases (data/atlas.db, data/stress.db);
   * both columns of data/beyond-atlas.csv (the builder and the 60 s search of n = 201..300);
 and its confirmations must be 3 or more, or the n listed with a reason in
 data/atlas-unconfirmed.csv. Prints one line per failure and a summary; exit 1 if any.
-usage: python3 scripts/atlas-check.py [--n 2..300] [--builds data/search-vs-build.csv]"""
+usage: python3 scripts/data/atlas-check.py [--n 2..300] [--builds data/search-vs-build.csv]"""
 import argparse, csv, json, sqlite3, sys
 from decimal import Decimal
 

@@ -3,12 +3,12 @@
 than a packing of one of GL1995's classes (the catalogue's classes whose source is the paper:
 `tripack classes --json`), with the paper's claim for that class (whether it conjectured the
 pattern best at that k), the builder's d and the gain. The builders' d come from the atlas
-step's JSON (`tripack atlas --json`, scripts/atlas.sh keeps it in data/logs/atlas.log), or, with
+step's JSON (`tripack atlas --json`, scripts/data/atlas.sh keeps it in data/logs/atlas.log), or, with
 --build A..B, from `tripack build CLASS --k K [--p P] [--variant V] --json` of every member of
 the paper's classes with n in A..B (`tripack classify N`), against data/atlas.csv.
 Prints a markdown table (docs/findings.md §6).
-usage: python3 scripts/atlas-records.py ATLAS_JSON [--tripack build/tripack]
-       python3 scripts/atlas-records.py --build 2..300 [--atlas data/atlas.csv]"""
+usage: python3 scripts/data/atlas-records.py ATLAS_JSON [--tripack build/tripack]
+       python3 scripts/data/atlas-records.py --build 2..300 [--atlas data/atlas.csv]"""
 import argparse, csv, json, subprocess, sys
 from decimal import Decimal
 

@@ -2,7 +2,7 @@
 """Summary of data/atlas-exact.csv (docs/exact.md): proofs by kind, the degree of P against n,
 seconds per row against n and degree (median and worst), the reasons rows stopped; markdown on
 stdout. With --plot FILE.svg also the degrees over n, drawn by gnuplot (gnuplot-nox).
-Usage: scripts/exact-summary.py [data/atlas-exact.csv] [--plot docs/figures/exact-degrees.svg]"""
+Usage: scripts/data/exact-summary.py [data/atlas-exact.csv] [--plot docs/figures/exact-degrees.svg]"""
 import csv, statistics, subprocess, sys, tempfile, collections, os
 
 args = [a for a in sys.argv[1:]]

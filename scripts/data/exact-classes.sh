@@ -3,10 +3,10 @@
 # catalogue class (k from k_min while n <= NMAX, at most KCOUNT values; classes with a matrix row
 # p: p = p_min and p_min + 1; a class with variants: its default one), statement (I) included,
 # into data/exact-classes.csv.
-# Usage: scripts/exact-classes.sh [NMAX (300)] [KCOUNT (10)]. Env: TRIPACK (build/tripack),
+# Usage: scripts/data/exact-classes.sh [NMAX (300)] [KCOUNT (10)]. Env: TRIPACK (build/tripack),
 # DIGITS (200).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 TRIPACK=${TRIPACK:-build/tripack}
 NMAX=${1:-300}
 KCOUNT=${2:-10}

@@ -4,7 +4,7 @@ changed (the label now names a packing of another d or bond count, or is no long
 gets proof `pending` with the reason, and its certificate data/exact/LABEL.gp is removed: the
 exact atlas then holds nothing about a replaced packing (docs/exact.md). `tripack exact-atlas`
 runs pending rows again. The old atlas is read from git (--before, default HEAD).
-usage: python3 scripts/exact-pending.py [--before HEAD]"""
+usage: python3 scripts/data/exact-pending.py [--before HEAD]"""
 import argparse, csv, io, os, subprocess
 
 ap = argparse.ArgumentParser()

@@ -1,6 +1,6 @@
 """A CSV table that a long script appends to one row at a time and a rerun continues: the rows
 already there, keyed by their n, are returned, and the writer appends (the header only to a new
-file). Shared by scripts/build-scan.py and scripts/search-vs-build.py."""
+file). Shared by scripts/analysis/build-scan.py and scripts/analysis/search-vs-build.py and scripts/analysis/build-vs-atlas.py."""
 import csv, os
 
 

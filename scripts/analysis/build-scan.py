@@ -5,7 +5,7 @@ Resumable: the rows already in --out are kept and their N skipped, each new row 
 its build ends, so an interrupted scan loses at most the builds under way; rerun to continue.
 A build over --limit seconds is stopped (SIGINT) and recorded as such.
 Prints the count of certified rows and the median and largest seconds at the end.
-usage: python3 scripts/build-scan.py [--tripack build/tripack] [--n 2..1000] [--jobs 1]
+usage: python3 scripts/analysis/build-scan.py [--tripack build/tripack] [--n 2..1000] [--jobs 1]
                                      [--limit 600] [--out data/build-scan.csv]
                                      [--extra '--exhaustive']"""
 import argparse, json, statistics, subprocess, sys, time
