@@ -279,6 +279,316 @@ class BasisChange {
   bool ok_ = false;
 };
 
+// The disks in breadth-first order along the bonds, from each component's first disk: a
+// coordinate is first looked for as a bonded neighbour's plus a small difference.
+std::vector<int> breadth_first_order(int n, const std::vector<std::vector<int>>& neighbours) {
+  std::vector<int> order;
+  std::vector<char> seen(static_cast<std::size_t>(n), 0);
+  for (int root = 0; root < n; ++root) {
+    if (seen[static_cast<std::size_t>(root)]) continue;
+    seen[static_cast<std::size_t>(root)] = 1;
+    for (std::size_t tail = (order.push_back(root), order.size() - 1); tail < order.size(); ++tail)
+      for (int j : neighbours[static_cast<std::size_t>(order[tail])])
+        if (!seen[static_cast<std::size_t>(j)]) {
+          seen[static_cast<std::size_t>(j)] = 1;
+          order.push_back(j);
+        }
+  }
+  return order;
+}
+
+using FoundCoordinates = std::vector<std::array<std::array<RationalPolynomial, 2>, 2>>;
+
+// The coordinates a + b w, found in L = K0(w) with w^2 + alpha w + beta = 0, as polynomials in a
+// primitive element theta = t + j w of L (and K becomes L: out's field, d and sqrt 3 rewritten,
+// t2 becomes theta's ball, k its degree). Empty, or why not.
+std::string express_in_primitive_element(ExactConfiguration& out, const FoundCoordinates& found,
+                                         const std::set<int>& rattlers,
+                                         const RationalPolynomial& alpha,
+                                         const RationalPolynomial& beta, int& k, arb_t t2,
+                                         const arb_t w2, slong prec2) {
+  const int n = static_cast<int>(found.size());
+  const RationalPolynomial zero{{"0"}};
+  // L over Q: the basis t^0..t^(k-1), t^0 w..t^(k-1) w. theta = t + j w is primitive when the
+  // characteristic polynomial of multiplication by theta (degree 2k) is irreducible.
+  const flint::Field k0(out.field);
+  FmpqPoly fa, fb;
+  k0.set(fa.value, alpha);
+  k0.set(fb.value, beta);
+  const int size = 2 * k;
+  auto coordinates_of = [&](fmpq_mat_t column, slong col, const fmpq_poly_t a,
+                            const fmpq_poly_t b) {
+    for (int r = 0; r < k; ++r) {
+      fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, r, col), a, r);
+      fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, k + r, col), b, r);
+    }
+  };
+  // (a + b w) theta = (a t - j b beta) + (a j + b t - j b alpha) w
+  auto times_theta = [&](FmpqPoly& a, FmpqPoly& b, int j) {
+    FmpqPoly x, na, nb, tpoly;
+    fmpq_poly_set_coeff_si(tpoly.value, 1, 1);
+    k0.mul(na.value, a.value, tpoly.value);
+    k0.mul(x.value, b.value, fb.value);
+    fmpq_poly_scalar_mul_si(x.value, x.value, j);
+    fmpq_poly_sub(na.value, na.value, x.value);
+    fmpq_poly_scalar_mul_si(nb.value, a.value, j);
+    k0.mul(x.value, b.value, tpoly.value);
+    fmpq_poly_add(nb.value, nb.value, x.value);
+    k0.mul(x.value, b.value, fa.value);
+    fmpq_poly_scalar_mul_si(x.value, x.value, j);
+    fmpq_poly_sub(nb.value, nb.value, x.value);
+    fmpq_poly_swap(a.value, na.value);
+    fmpq_poly_swap(b.value, nb.value);
+  };
+  int chosen = 0;
+  fmpq_mat_t powers, inverse;
+  fmpq_mat_init(powers, size, size);
+  fmpq_mat_init(inverse, size, size);
+  FmpzPoly norm;
+  for (int j = 1; j <= 5 && !chosen; ++j) {
+    FmpqPoly a, b;
+    fmpq_poly_one(a.value);
+    for (int col = 0; col < size; ++col) {
+      coordinates_of(powers, col, a.value, b.value);
+      times_theta(a, b, j);
+    }
+    // theta^size in the basis: the powers' matrix is invertible iff theta generates L; its
+    // minimal polynomial is then x^size - sum c_i x^i with c = powers^-1 theta^size.
+    if (!fmpq_mat_inv(inverse, powers)) continue;
+    fmpq_mat_t last, c;
+    fmpq_mat_init(last, size, 1);
+    fmpq_mat_init(c, size, 1);
+    coordinates_of(last, 0, a.value, b.value);
+    fmpq_mat_mul(c, inverse, last);
+    FmpqPoly minimal;
+    fmpq_poly_set_coeff_si(minimal.value, size, 1);
+    for (int r = 0; r < size; ++r) {
+      Fmpq e;
+      fmpq_neg(e.value, fmpq_mat_entry(c, r, 0));
+      fmpq_poly_set_coeff_fmpq(minimal.value, r, e.value);
+    }
+    fmpq_mat_clear(last);
+    fmpq_mat_clear(c);
+    fmpq_poly_get_numerator(norm.value, minimal.value);
+    fmpz_poly_primitive_part(norm.value, norm.value);
+    if (fmpz_poly_degree(norm.value) == size && irreducible(norm.value)) chosen = j;
+  }
+  if (!chosen) {
+    fmpq_mat_clear(powers);
+    fmpq_mat_clear(inverse);
+    return fmt::format("no primitive element t + j w (j = 1..5) of the extension of degree {}",
+                       size);
+  }
+  // Elements a + b w as polynomials in theta: inverse * coordinates.
+  fmpq_mat_t column, result;
+  fmpq_mat_init(column, size, 1);
+  fmpq_mat_init(result, size, 1);
+  auto in_theta = [&](const RationalPolynomial& a, const RationalPolynomial& b) {
+    FmpqPoly pa, pb;
+    k0.set(pa.value, a);
+    k0.set(pb.value, b);
+    coordinates_of(column, 0, pa.value, pb.value);
+    fmpq_mat_mul(result, inverse, column);
+    FmpqPoly poly;
+    for (int r = 0; r < size; ++r)
+      fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
+    return flint::strings_from_fmpq_poly(poly.value);
+  };
+  for (int i = 0; i < n; ++i)
+    for (int c = 0; c < 2; ++c) {
+      const auto& e = found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
+      out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
+          rattlers.count(i) ? e[0] : in_theta(e[0], e[1]);
+    }
+  out.d_in_field = in_theta(out.d_in_field, zero);
+  out.sqrt3_in_field = in_theta(out.sqrt3_in_field, zero);
+  fmpq_mat_clear(column);
+  fmpq_mat_clear(result);
+  fmpq_mat_clear(powers);
+  fmpq_mat_clear(inverse);
+  if (fmpz_sgn(fmpz_poly_lead(norm.value)) < 0) fmpz_poly_neg(norm.value, norm.value);
+  out.field = flint::strings_from_poly(norm.value);
+  // theta0 = t0 + j w0
+  Arb jw;
+  arb_mul_si(jw.value, w2, chosen, prec2);
+  arb_add(t2, t2, jw.value, prec2);
+  k = size;
+  return "";
+}
+
+// t0 isolated far more narrowly than d's interval, so that d_in_K(t0), a root of P (checked
+// exactly below), is proven to be the root in d's interval. Empty, or why not.
+std::string isolate_embedding(ExactConfiguration& out, const arb_t t2, int digits, slong prec2) {
+  FmpzPoly kpoly;
+  flint::poly_from_strings(kpoly.value, out.field.coefficients);
+  const auto narrow = flint::isolate_root(kpoly.value, t2, 2 * digits - 30, prec2);
+  if (!narrow) {
+    return "the field's root could not be isolated";
+  }
+  out.embedding = *narrow;
+  return "";
+}
+
+// Exact: P(d) = 0 and sqrt3^2 = 3 in K. Empty, or why not.
+std::string check_field_identities(const ExactConfiguration& out, const flint::Field& field,
+                                   const MinimalPolynomial& d_poly) {
+  const int m = d_poly.polynomial.degree();
+  FmpqPoly dk, value, power, term, s3;
+  field.set(dk.value, out.d_in_field);
+  fmpq_poly_zero(value.value);
+  fmpq_poly_one(power.value);
+  Fmpq c;
+  for (slong i = 0; i <= m; ++i) {
+    fmpq_set_str(c.value, d_poly.polynomial.coefficients[static_cast<std::size_t>(i)].c_str(), 10);
+    fmpq_poly_scalar_mul_fmpq(term.value, power.value, c.value);
+    fmpq_poly_add(value.value, value.value, term.value);
+    field.mul(power.value, power.value, dk.value);
+  }
+  if (!field.is_zero(value.value)) {
+    return "P(d) is not 0 in the field";
+  }
+  field.set(s3.value, out.sqrt3_in_field);
+  field.mul(s3.value, s3.value, s3.value);
+  Fmpq three;
+  fmpq_set_si(three.value, 3, 1);
+  fmpq_poly_sub_fmpq(s3.value, s3.value, three.value);
+  if (!field.is_zero(s3.value)) {
+    return "sqrt(3)^2 is not 3 in the field";
+  }
+  return "";
+}
+
+// Every bond as an identity in K. Empty, or why not.
+std::string check_bonds_exact(const ExactConfiguration& out, const flint::Field& field,
+                              const ConfigurationInput& in, const std::set<int>& rattlers) {
+  FmpqPoly dk, s3, xa, ya, xb, yb, dx, dy, e, f;
+  field.set(dk.value, out.d_in_field);
+  field.set(s3.value, out.sqrt3_in_field);
+  for (const Bond& b : in.bonds) {
+    if (rattlers.count(b.a) || (!b.is_wall() && rattlers.count(b.b))) {
+      return fmt::format("a bond of rattler {}", b.a + 1);
+    }
+    field.set(xa.value, out.points[static_cast<std::size_t>(b.a)][0]);
+    field.set(ya.value, out.points[static_cast<std::size_t>(b.a)][1]);
+    if (b.is_wall()) {
+      switch (b.side()) {
+        case Side::Bottom:
+          fmpq_poly_set(e.value, ya.value);
+          break;
+        case Side::Left:  // sqrt3 x - y
+          field.mul(e.value, s3.value, xa.value);
+          fmpq_poly_sub(e.value, e.value, ya.value);
+          break;
+        case Side::Right:  // sqrt3 (1 - x) - y
+          fmpq_poly_one(f.value);
+          fmpq_poly_sub(f.value, f.value, xa.value);
+          field.mul(e.value, s3.value, f.value);
+          fmpq_poly_sub(e.value, e.value, ya.value);
+          break;
+      }
+    } else {
+      field.set(xb.value, out.points[static_cast<std::size_t>(b.b)][0]);
+      field.set(yb.value, out.points[static_cast<std::size_t>(b.b)][1]);
+      fmpq_poly_sub(dx.value, xa.value, xb.value);
+      fmpq_poly_sub(dy.value, ya.value, yb.value);
+      field.mul(e.value, dx.value, dx.value);
+      field.mul(f.value, dy.value, dy.value);
+      fmpq_poly_add(e.value, e.value, f.value);
+      field.mul(f.value, dk.value, dk.value);
+      fmpq_poly_sub(e.value, e.value, f.value);
+    }
+    if (!field.is_zero(e.value)) {
+      return b.is_wall()
+                 ? fmt::format("the wall bond of point {} is not exact in the field", b.a + 1)
+                 : fmt::format("the bond {}-{} is not exact in the field", b.a + 1, b.b + 1);
+    }
+  }
+  return "";
+}
+
+// At the real embedding, in ball arithmetic: sqrt3 > 0 there, d in P's interval, the exact
+// points near the given ones, every non-bond strictly apart, every centre inside; the offset and
+// margin go to `out`. Empty, or why not.
+std::string check_at_embedding(ExactConfiguration& out, const ConfigurationInput& in,
+                               const MinimalPolynomial& d_poly, slong prec2) {
+  Arb t0;
+  flint::ball_of(t0.value, out.embedding, prec2);
+  auto evaluate = [&](arb_t result, const RationalPolynomial& element) {
+    FmpqPoly q;
+    flint::fmpq_poly_from_strings(q.value, element.coefficients);
+    flint::ArbPoly a;
+    arb_poly_set_fmpq_poly(a.value, q.value, prec2);
+    arb_poly_evaluate(result, a.value, t0.value, prec2);
+  };
+  Arb dv, sv, interval;
+  evaluate(dv.value, out.d_in_field);
+  evaluate(sv.value, out.sqrt3_in_field);
+  flint::ball_of(interval.value, d_poly.root, prec2);
+  if (!arb_is_positive(sv.value) || !arb_contains(interval.value, dv.value)) {
+    return "the embedding does not give +sqrt(3) and d in its interval";
+  }
+  std::vector<std::array<std::unique_ptr<Arb>, 2>> at(static_cast<std::size_t>(in.n));
+  Arb given, diff;
+  for (int i = 0; i < in.n; ++i)
+    for (int c = 0; c < 2; ++c) {
+      auto& slot = at[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
+      slot = std::make_unique<Arb>();
+      evaluate(slot->value, out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]);
+      flint::set_decimal(given.value,
+                         in.given[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)], 30,
+                         prec2);
+      arb_get_mid_arb(given.value, given.value);  // the given point itself, exactly
+      arb_sub(diff.value, slot->value, given.value, prec2);
+      out.largest_offset = std::max(out.largest_offset, upper_bound(diff.value));
+    }
+  std::set<std::pair<int, int>> bonded;
+  for (const Bond& b : in.bonds) bonded.insert({b.a, b.b});
+  out.smallest_margin = INFINITY;
+  Arb dx, dy, r, dd;
+  arb_mul(dd.value, dv.value, dv.value, prec2);
+  for (int i = 0; i < in.n; ++i) {
+    const auto& xi = at[static_cast<std::size_t>(i)];
+    for (int j = i + 1; j < in.n; ++j) {
+      if (bonded.count({i, j})) continue;
+      const auto& xj = at[static_cast<std::size_t>(j)];
+      arb_sub(dx.value, xi[0]->value, xj[0]->value, prec2);
+      arb_sub(dy.value, xi[1]->value, xj[1]->value, prec2);
+      arb_mul(dx.value, dx.value, dx.value, prec2);
+      arb_addmul(dx.value, dy.value, dy.value, prec2);
+      arb_sub(r.value, dx.value, dd.value, prec2);  // |pi - pj|^2 - d^2
+      if (!arb_is_positive(r.value)) {
+        return fmt::format("points {} and {} are not proven farther apart than d", i + 1, j + 1);
+      }
+      arb_div(r.value, r.value, dd.value, prec2);
+      out.smallest_margin = std::min(out.smallest_margin, lower_bound(r.value) / 2);
+    }
+    for (const Side side : kSides) {
+      if (bonded.count({i, -1 - static_cast<int>(side)})) continue;
+      if (side == Side::Bottom) {
+        arb_set(r.value, xi[1]->value);
+      } else {
+        arb_one(dx.value);
+        if (side == Side::Left)
+          arb_set(dx.value, xi[0]->value);
+        else
+          arb_sub(dx.value, dx.value, xi[0]->value, prec2);
+        arb_mul(r.value, sv.value, dx.value, prec2);
+        arb_sub(r.value, r.value, xi[1]->value, prec2);
+      }
+      if (!arb_is_positive(r.value)) {
+        return fmt::format("point {} is not proven inside the {} side", i + 1, side_name(side));
+      }
+      arb_div(r.value, r.value, dv.value, prec2);
+      out.smallest_margin = std::min(out.smallest_margin, lower_bound(r.value));
+    }
+  }
+  if (!(out.largest_offset < 1e-25)) {
+    return fmt::format("the exact points lie {:.2g} from the given ones (10^-25 asked)",
+                       out.largest_offset);
+  }
+  return "";
+}
+
 }  // namespace
 
 ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPolynomial& d_poly) {
@@ -367,21 +677,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       neighbours[static_cast<std::size_t>(b.a)].push_back(b.b);
       neighbours[static_cast<std::size_t>(b.b)].push_back(b.a);
     }
-  std::vector<int> order;
-  {
-    std::vector<char> seen(static_cast<std::size_t>(in.n), 0);
-    for (int root = 0; root < in.n; ++root) {
-      if (seen[static_cast<std::size_t>(root)]) continue;
-      seen[static_cast<std::size_t>(root)] = 1;
-      for (std::size_t tail = (order.push_back(root), order.size() - 1); tail < order.size();
-           ++tail)
-        for (int j : neighbours[static_cast<std::size_t>(order[tail])])
-          if (!seen[static_cast<std::size_t>(j)]) {
-            seen[static_cast<std::size_t>(j)] = 1;
-            order.push_back(j);
-          }
-    }
-  }
+  const std::vector<int> order = breadth_first_order(in.n, neighbours);
   // K0's search basis (the tower's d^a, sqrt3 d^a, or t's powers) and its conversion to t.
   // In the tower, `part` 0 gives only d^a (Q(d)), 1 only sqrt3 d^a, -1 both.
   auto k0_basis = [&](int pass, slong p, int part = -1) {
@@ -495,8 +791,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   };
   const RationalPolynomial zero{{"0"}};
   // Found coordinates as a + b w (b = 0 while there is no extension), and their balls.
-  std::vector<std::array<std::array<RationalPolynomial, 2>, 2>> found(
-      static_cast<std::size_t>(in.n));
+  FoundCoordinates found(static_cast<std::size_t>(in.n));
   std::vector<std::array<std::unique_ptr<Arb>, 4>> balls(static_cast<std::size_t>(in.n));
   for (int i : order)
     for (int c = 0; c < 2; ++c) {
@@ -570,286 +865,24 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
       for (int c = 0; c < 2; ++c)
         out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
             found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
-  } else {
-    // L over Q: the basis t^0..t^(k-1), t^0 w..t^(k-1) w. theta = t + j w is primitive when the
-    // characteristic polynomial of multiplication by theta (degree 2k) is irreducible.
-    const flint::Field k0(out.field);
-    FmpqPoly fa, fb;
-    k0.set(fa.value, alpha);
-    k0.set(fb.value, beta);
-    const int size = 2 * k;
-    auto coordinates_of = [&](fmpq_mat_t column, slong col, const fmpq_poly_t a,
-                              const fmpq_poly_t b) {
-      for (int r = 0; r < k; ++r) {
-        fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, r, col), a, r);
-        fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, k + r, col), b, r);
-      }
-    };
-    // (a + b w) theta = (a t - j b beta) + (a j + b t - j b alpha) w
-    auto times_theta = [&](FmpqPoly& a, FmpqPoly& b, int j) {
-      FmpqPoly x, na, nb, tpoly;
-      fmpq_poly_set_coeff_si(tpoly.value, 1, 1);
-      k0.mul(na.value, a.value, tpoly.value);
-      k0.mul(x.value, b.value, fb.value);
-      fmpq_poly_scalar_mul_si(x.value, x.value, j);
-      fmpq_poly_sub(na.value, na.value, x.value);
-      fmpq_poly_scalar_mul_si(nb.value, a.value, j);
-      k0.mul(x.value, b.value, tpoly.value);
-      fmpq_poly_add(nb.value, nb.value, x.value);
-      k0.mul(x.value, b.value, fa.value);
-      fmpq_poly_scalar_mul_si(x.value, x.value, j);
-      fmpq_poly_sub(nb.value, nb.value, x.value);
-      fmpq_poly_swap(a.value, na.value);
-      fmpq_poly_swap(b.value, nb.value);
-    };
-    int chosen = 0;
-    fmpq_mat_t powers, inverse;
-    fmpq_mat_init(powers, size, size);
-    fmpq_mat_init(inverse, size, size);
-    FmpzPoly norm;
-    for (int j = 1; j <= 5 && !chosen; ++j) {
-      FmpqPoly a, b;
-      fmpq_poly_one(a.value);
-      for (int col = 0; col < size; ++col) {
-        coordinates_of(powers, col, a.value, b.value);
-        times_theta(a, b, j);
-      }
-      // theta^size in the basis: the powers' matrix is invertible iff theta generates L; its
-      // minimal polynomial is then x^size - sum c_i x^i with c = powers^-1 theta^size.
-      if (!fmpq_mat_inv(inverse, powers)) continue;
-      fmpq_mat_t last, c;
-      fmpq_mat_init(last, size, 1);
-      fmpq_mat_init(c, size, 1);
-      coordinates_of(last, 0, a.value, b.value);
-      fmpq_mat_mul(c, inverse, last);
-      FmpqPoly minimal;
-      fmpq_poly_set_coeff_si(minimal.value, size, 1);
-      for (int r = 0; r < size; ++r) {
-        Fmpq e;
-        fmpq_neg(e.value, fmpq_mat_entry(c, r, 0));
-        fmpq_poly_set_coeff_fmpq(minimal.value, r, e.value);
-      }
-      fmpq_mat_clear(last);
-      fmpq_mat_clear(c);
-      fmpq_poly_get_numerator(norm.value, minimal.value);
-      fmpz_poly_primitive_part(norm.value, norm.value);
-      if (fmpz_poly_degree(norm.value) == size && irreducible(norm.value)) chosen = j;
-    }
-    if (!chosen) {
-      fmpq_mat_clear(powers);
-      fmpq_mat_clear(inverse);
-      out.reason = fmt::format(
-          "no primitive element t + j w (j = 1..5) of the extension of degree {}", size);
-      return out;
-    }
-    // Elements a + b w as polynomials in theta: inverse * coordinates.
-    fmpq_mat_t column, result;
-    fmpq_mat_init(column, size, 1);
-    fmpq_mat_init(result, size, 1);
-    auto in_theta = [&](const RationalPolynomial& a, const RationalPolynomial& b) {
-      FmpqPoly pa, pb;
-      k0.set(pa.value, a);
-      k0.set(pb.value, b);
-      coordinates_of(column, 0, pa.value, pb.value);
-      fmpq_mat_mul(result, inverse, column);
-      FmpqPoly poly;
-      for (int r = 0; r < size; ++r)
-        fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
-      return flint::strings_from_fmpq_poly(poly.value);
-    };
-    for (int i = 0; i < in.n; ++i)
-      for (int c = 0; c < 2; ++c) {
-        const auto& e = found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
-        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
-            rattlers.count(i) ? e[0] : in_theta(e[0], e[1]);
-      }
-    out.d_in_field = in_theta(out.d_in_field, zero);
-    out.sqrt3_in_field = in_theta(out.sqrt3_in_field, zero);
-    fmpq_mat_clear(column);
-    fmpq_mat_clear(result);
-    fmpq_mat_clear(powers);
-    fmpq_mat_clear(inverse);
-    if (fmpz_sgn(fmpz_poly_lead(norm.value)) < 0) fmpz_poly_neg(norm.value, norm.value);
-    out.field = flint::strings_from_poly(norm.value);
-    // theta0 = t0 + j w0
-    Arb jw;
-    arb_mul_si(jw.value, w2.value, chosen, prec2);
-    arb_add(t2.value, t2.value, jw.value, prec2);
-    k = size;
-  }
-
-  // t0 isolated far more narrowly than d's interval, so that d_in_K(t0), a root of P (checked
-  // exactly below), is proven to be the root in d's interval.
-  {
-    FmpzPoly kpoly;
-    flint::poly_from_strings(kpoly.value, out.field.coefficients);
-    const auto narrow = flint::isolate_root(kpoly.value, t2.value, 2 * digits - 30, prec2);
-    if (!narrow) {
-      out.reason = "the field's root could not be isolated";
-      return out;
-    }
-    out.embedding = *narrow;
-  }
-  const flint::Field field(out.field);
-  // Exact: P(d) = 0 and sqrt3^2 = 3 in K.
-  {
-    FmpqPoly dk, value, power, term, s3;
-    field.set(dk.value, out.d_in_field);
-    fmpq_poly_zero(value.value);
-    fmpq_poly_one(power.value);
-    Fmpq c;
-    for (slong i = 0; i <= m; ++i) {
-      fmpq_set_str(c.value, d_poly.polynomial.coefficients[static_cast<std::size_t>(i)].c_str(),
-                   10);
-      fmpq_poly_scalar_mul_fmpq(term.value, power.value, c.value);
-      fmpq_poly_add(value.value, value.value, term.value);
-      field.mul(power.value, power.value, dk.value);
-    }
-    if (!field.is_zero(value.value)) {
-      out.reason = "P(d) is not 0 in the field";
-      return out;
-    }
-    field.set(s3.value, out.sqrt3_in_field);
-    field.mul(s3.value, s3.value, s3.value);
-    Fmpq three;
-    fmpq_set_si(three.value, 3, 1);
-    fmpq_poly_sub_fmpq(s3.value, s3.value, three.value);
-    if (!field.is_zero(s3.value)) {
-      out.reason = "sqrt(3)^2 is not 3 in the field";
-      return out;
-    }
-  }
-
-  // Every bond as an identity in K.
-  {
-    FmpqPoly dk, s3, xa, ya, xb, yb, dx, dy, e, f;
-    field.set(dk.value, out.d_in_field);
-    field.set(s3.value, out.sqrt3_in_field);
-    for (const Bond& b : in.bonds) {
-      if (rattlers.count(b.a) || (!b.is_wall() && rattlers.count(b.b))) {
-        out.reason = fmt::format("a bond of rattler {}", b.a + 1);
-        return out;
-      }
-      field.set(xa.value, out.points[static_cast<std::size_t>(b.a)][0]);
-      field.set(ya.value, out.points[static_cast<std::size_t>(b.a)][1]);
-      if (b.is_wall()) {
-        switch (b.side()) {
-          case Side::Bottom:
-            fmpq_poly_set(e.value, ya.value);
-            break;
-          case Side::Left:  // sqrt3 x - y
-            field.mul(e.value, s3.value, xa.value);
-            fmpq_poly_sub(e.value, e.value, ya.value);
-            break;
-          case Side::Right:  // sqrt3 (1 - x) - y
-            fmpq_poly_one(f.value);
-            fmpq_poly_sub(f.value, f.value, xa.value);
-            field.mul(e.value, s3.value, f.value);
-            fmpq_poly_sub(e.value, e.value, ya.value);
-            break;
-        }
-      } else {
-        field.set(xb.value, out.points[static_cast<std::size_t>(b.b)][0]);
-        field.set(yb.value, out.points[static_cast<std::size_t>(b.b)][1]);
-        fmpq_poly_sub(dx.value, xa.value, xb.value);
-        fmpq_poly_sub(dy.value, ya.value, yb.value);
-        field.mul(e.value, dx.value, dx.value);
-        field.mul(f.value, dy.value, dy.value);
-        fmpq_poly_add(e.value, e.value, f.value);
-        field.mul(f.value, dk.value, dk.value);
-        fmpq_poly_sub(e.value, e.value, f.value);
-      }
-      if (!field.is_zero(e.value)) {
-        out.reason =
-            b.is_wall()
-                ? fmt::format("the wall bond of point {} is not exact in the field", b.a + 1)
-                : fmt::format("the bond {}-{} is not exact in the field", b.a + 1, b.b + 1);
-        return out;
-      }
-    }
-  }
-
-  // At the real embedding, in ball arithmetic: sqrt3 > 0 there, d in P's interval, the exact
-  // points near the given ones, every non-bond strictly apart, every centre inside.
-  Arb t0;
-  flint::ball_of(t0.value, out.embedding, prec2);
-  auto evaluate = [&](arb_t result, const RationalPolynomial& element) {
-    FmpqPoly q;
-    flint::fmpq_poly_from_strings(q.value, element.coefficients);
-    flint::ArbPoly a;
-    arb_poly_set_fmpq_poly(a.value, q.value, prec2);
-    arb_poly_evaluate(result, a.value, t0.value, prec2);
-  };
-  Arb dv, sv, interval;
-  evaluate(dv.value, out.d_in_field);
-  evaluate(sv.value, out.sqrt3_in_field);
-  flint::ball_of(interval.value, d_poly.root, prec2);
-  if (!arb_is_positive(sv.value) || !arb_contains(interval.value, dv.value)) {
-    out.reason = "the embedding does not give +sqrt(3) and d in its interval";
+  } else if (std::string why = express_in_primitive_element(out, found, rattlers, alpha, beta, k,
+                                                            t2.value, w2.value, prec2);
+             !why.empty()) {
+    out.reason = why;
     return out;
   }
-  std::vector<std::array<std::unique_ptr<Arb>, 2>> at(static_cast<std::size_t>(in.n));
-  Arb given, diff;
-  for (int i = 0; i < in.n; ++i)
-    for (int c = 0; c < 2; ++c) {
-      auto& slot = at[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
-      slot = std::make_unique<Arb>();
-      evaluate(slot->value, out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)]);
-      flint::set_decimal(given.value,
-                         in.given[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)], 30,
-                         prec2);
-      arb_get_mid_arb(given.value, given.value);  // the given point itself, exactly
-      arb_sub(diff.value, slot->value, given.value, prec2);
-      out.largest_offset = std::max(out.largest_offset, upper_bound(diff.value));
-    }
-  std::set<std::pair<int, int>> bonded;
-  for (const Bond& b : in.bonds) bonded.insert({b.a, b.b});
-  out.smallest_margin = INFINITY;
-  Arb dx, dy, r, dd;
-  arb_mul(dd.value, dv.value, dv.value, prec2);
-  for (int i = 0; i < in.n; ++i) {
-    const auto& xi = at[static_cast<std::size_t>(i)];
-    for (int j = i + 1; j < in.n; ++j) {
-      if (bonded.count({i, j})) continue;
-      const auto& xj = at[static_cast<std::size_t>(j)];
-      arb_sub(dx.value, xi[0]->value, xj[0]->value, prec2);
-      arb_sub(dy.value, xi[1]->value, xj[1]->value, prec2);
-      arb_mul(dx.value, dx.value, dx.value, prec2);
-      arb_addmul(dx.value, dy.value, dy.value, prec2);
-      arb_sub(r.value, dx.value, dd.value, prec2);  // |pi - pj|^2 - d^2
-      if (!arb_is_positive(r.value)) {
-        out.reason =
-            fmt::format("points {} and {} are not proven farther apart than d", i + 1, j + 1);
-        return out;
-      }
-      arb_div(r.value, r.value, dd.value, prec2);
-      out.smallest_margin = std::min(out.smallest_margin, lower_bound(r.value) / 2);
-    }
-    for (const Side side : kSides) {
-      if (bonded.count({i, -1 - static_cast<int>(side)})) continue;
-      if (side == Side::Bottom) {
-        arb_set(r.value, xi[1]->value);
-      } else {
-        arb_one(dx.value);
-        if (side == Side::Left)
-          arb_set(dx.value, xi[0]->value);
-        else
-          arb_sub(dx.value, dx.value, xi[0]->value, prec2);
-        arb_mul(r.value, sv.value, dx.value, prec2);
-        arb_sub(r.value, r.value, xi[1]->value, prec2);
-      }
-      if (!arb_is_positive(r.value)) {
-        out.reason =
-            fmt::format("point {} is not proven inside the {} side", i + 1, side_name(side));
-        return out;
-      }
-      arb_div(r.value, r.value, dv.value, prec2);
-      out.smallest_margin = std::min(out.smallest_margin, lower_bound(r.value));
-    }
+
+  // Then the proof's steps, each a reason when it fails.
+  if (std::string why = isolate_embedding(out, t2.value, digits, prec2); !why.empty()) {
+    out.reason = why;
+    return out;
   }
-  if (!(out.largest_offset < 1e-25)) {
-    out.reason = fmt::format("the exact points lie {:.2g} from the given ones (10^-25 asked)",
-                             out.largest_offset);
+  const flint::Field field(out.field);
+  std::string why = check_field_identities(out, field, d_poly);
+  if (why.empty()) why = check_bonds_exact(out, field, in, rattlers);
+  if (why.empty()) why = check_at_embedding(out, in, d_poly, prec2);
+  if (!why.empty()) {
+    out.reason = why;
     return out;
   }
   out.proven = true;
