@@ -16,6 +16,23 @@ namespace tripack {
 
 namespace {
 
+// Inverse iteration from a seeded random start (30 solves with the factorization of A): the
+// Rayleigh quotient approaches A's smallest eigenvalue from above; a near-null direction
+// dominates after the first solve.
+template <class Vector, class Solver, class Matrix>
+auto smallest_eigenvalue_estimate(const Solver& solver, const Matrix& A, Eigen::Index columns) {
+  std::mt19937_64 rng(20261121);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Vector x(columns);
+  for (auto& v : x) v = u(rng);
+  x.normalize();
+  for (int it = 0; it < 30; ++it) {
+    x = solver.solve(x);
+    x.normalize();
+  }
+  return x.dot(A * x);
+}
+
 // Columns of the non-rattlers: 2 per disk, -1 for rattlers.
 std::vector<int> motion_columns(std::size_t n, const std::vector<int>& rattlers, int& count) {
   std::vector<int> col(n, 0);
@@ -259,18 +276,7 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
     out.declined = "G^T G is singular (a first-order motion may keep every bond)";
     return out;
   }
-  // Inverse iteration from a seeded random start: the Rayleigh quotient approaches the smallest
-  // eigenvalue from above; a near-null direction dominates after the first solve.
-  std::mt19937_64 rng(20261121);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd x(columns);
-  for (auto& v : x) v = u(rng);
-  x.normalize();
-  for (int it = 0; it < 30; ++it) {
-    x = ldlt.solve(x);
-    x.normalize();
-  }
-  out.min_eigenvalue = x.dot(A * x);
+  out.min_eigenvalue = smallest_eigenvalue_estimate<Eigen::VectorXd>(ldlt, A, columns);
   if (!(out.min_eigenvalue > min_eigenvalue)) {
     out.declined = "G^T G is nearly singular (smallest eigenvalue below the threshold)";
     return out;
@@ -353,16 +359,7 @@ MultiprecisionCertificate multiprecision_certificate(const MultiprecisionPolish&
         "every bond)";
     return out;
   }
-  std::mt19937_64 rng(20261121);
-  std::uniform_real_distribution<double> u(-1, 1);
-  VecL x(columns);
-  for (auto& v : x) v = u(rng);
-  x.normalize();
-  for (int it = 0; it < 30; ++it) {
-    x = llt.solve(x);
-    x.normalize();
-  }
-  out.eigenvalue_estimate = x.dot(A * x);
+  out.eigenvalue_estimate = smallest_eigenvalue_estimate<VecL>(llt, A, columns);
   const long double mu = out.eigenvalue_estimate / 2;
   SpL shifted = A;
   for (Eigen::Index c = 0; c < columns; ++c) shifted.coeffRef(c, c) -= mu;
