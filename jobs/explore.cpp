@@ -46,13 +46,6 @@ bool proven_optimal(long long n) {
   return triangular(k) == n;  // Delta(k): Oler's bound is attained (Oler 1961)
 }
 
-std::string member_tag(const Provenance& m) {
-  std::string s = fmt::format("{}-k{}", m.class_id, m.k);
-  if (m.p) s += fmt::format("-p{}", m.p);
-  if (!m.variant.empty()) s += "-" + m.variant;
-  return s;
-}
-
 struct Plan {
   std::vector<BuildRequest> builds;
   std::vector<long long> searches;  // n, increasing
@@ -93,7 +86,7 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
 
 PackingRecord packing_of_build(const pipeline::BuildResult& b, double seconds) {
   PackingRecord row = b.record;
-  row.label = member_tag(row.pattern.provenance);
+  row.label = pipeline::member_name(row.pattern.provenance);
   row.rank = 0;
   row.seconds = seconds;
   row.proven_optimal = proven_optimal(row.n());

@@ -215,6 +215,13 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
   return result;
 }
 
+std::string member_file_stem(const Provenance& member) {
+  std::string s = member.class_id + "-k" + std::to_string(member.k);
+  if (member.p) s += "-p" + std::to_string(member.p);
+  if (!member.variant.empty()) s += "-" + member.variant;
+  return s;
+}
+
 std::string member_name(const Provenance& member) {
   std::string s = member.class_id + " k=" + std::to_string(member.k);
   if (member.p) s += " p=" + std::to_string(member.p);

@@ -98,5 +98,7 @@ struct BestBuild {
 BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings);
 
 std::string member_name(const Provenance& member);  // "matrix k=2 p=7 variant=..."
+// The same in a file name: "matrix-k2-p7-..." (docs/conventions.md, "Names").
+std::string member_file_stem(const Provenance& member);
 
 }  // namespace tripack::pipeline

@@ -451,10 +451,7 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
 std::string packing_file_name(const PackingRecord& row) {
   const std::string name =
       row.from_builder()
-          ? fmt::format("n{:04d}-{}", row.n(), row.pattern.provenance.class_id) +
-                fmt::format("-k{}", row.pattern.provenance.k) +
-                (row.pattern.provenance.p ? fmt::format("-p{}", row.pattern.provenance.p) : "") +
-                (row.pattern.provenance.variant.empty() ? "" : "-" + row.pattern.provenance.variant)
+          ? fmt::format("n{:04d}-{}", row.n(), pipeline::member_file_stem(row.pattern.provenance))
           : fmt::format("n{:04d}-{}", row.n(), row.label);
   return "packings/" + name + ".txt";
 }
