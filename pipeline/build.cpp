@@ -44,9 +44,9 @@ PackingRecord record_of_build(const BuildResult& b) {
   } else {
     record = PackingRecord::of(b.pattern);
     if (b.multiprecision) apply_multiprecision(record, *b.multiprecision);
-    record.verdict = b.certify_error.empty() ? "not certified (certification skipped)"
-                                             : "not certified: the certificate failed: " +
-                                                   b.certify_error;
+    record.verdict = b.certify_error.empty()
+                         ? "not certified (certification skipped)"
+                         : "not certified: the certificate failed: " + b.certify_error;
     identify(record);
   }
   record.pattern.provenance = b.pattern.provenance;

@@ -46,7 +46,8 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
   for (const auto& member : pipeline::class_members_up_to(catalogue, 200)) {
     // jogged-line members up to 60 disks only: all of them up to 200 cost 650 s more (2
     // threads); every member up to 300 is checked against the atlas by the atlas step and
-    // scripts/data/atlas-check.py (docs/atlas.md), and tests/test_vacancy_segment.cpp builds 81 and 110.
+    // scripts/data/atlas-check.py (docs/atlas.md), and tests/test_vacancy_segment.cpp builds 81 and
+    // 110.
     if (member.class_id == "jogged-line" &&
         catalogue.n_of(catalogue.find(member.class_id), member.k, member.p) > 60)
       continue;
