@@ -1,4 +1,6 @@
 // The catalogue's commands: classes, classify, table, check-formula.
+#include "report/results/catalogue.hpp"
+
 #include <memory>
 
 #include "commands/common.hpp"

@@ -13,7 +13,6 @@
 #include "commands/command.hpp"
 #include "constructors/catalogue.hpp"
 #include "core/packing.hpp"
-#include "report/described.hpp"
 #include "report/progress_line.hpp"
 #include "report/render.hpp"
 
@@ -23,22 +22,12 @@ Catalogue load_catalogue(const Context& context);
 
 // --output-format NAME (--json and --csv are its aliases) / --points: how the result is printed.
 struct Output {
-  std::string name;     // a writer of report/described.hpp's table; empty: text
+  std::string name;     // a writer of report/description.hpp's table; empty: text
   bool points = false;  // JSON: with coordinates
   void declare(OptionList& o, bool with_points = false);
   // Two different formats asked for (--json --csv) are an error, not a silent choice.
   void choose(const std::string& format, const std::string& given_as);
-  // text, json or csv: the result's own view; any other writer: its description.
   std::string format_name() const { return name.empty() ? "text" : name; }
-  report::OutputFormat format() const {
-    const std::string f = format_name();
-    return f == "json" ? report::OutputFormat::Json
-                       : (f == "csv" ? report::OutputFormat::Csv : report::OutputFormat::Text);
-  }
-  bool own_view() const {
-    const std::string f = format_name();
-    return f == "text" || f == "json" || f == "csv";
-  }
 };
 
 // --svg FILE / --png FILE / --pdf FILE: a diagram of the result's packing (report/diagram.hpp).
@@ -70,16 +59,10 @@ template <class Result>
 void print_result(const Result& result, const Output& out) {
   std::ostringstream buffer;
   try {
-    if (out.own_view()) {
-      report::render(buffer, result, out.format(), {out.points});
-    } else {
-      std::ostringstream json;
-      report::render(json, result, report::OutputFormat::Json, {out.points});
-      report::write_json_description(buffer, json.str(), out.format_name());
-    }
+    report::render(buffer, result, out.format_name(), {out.points});
   } catch (const std::exception& e) {
     std::ostringstream text;
-    report::render(text, result, report::OutputFormat::Text, {out.points});
+    report::render(text, result, "text", {out.points});
     std::cout << text.str() << std::flush;
     throw std::runtime_error(std::string("could not format the result (printed as text): ") +
                              e.what());

@@ -8,6 +8,7 @@
 #include "core/option_values.hpp"
 #include "jobs/import.hpp"
 #include "jobs/stored.hpp"
+#include "report/results/database.hpp"
 
 namespace tripack::commands {
 

@@ -4,7 +4,6 @@
 #include <sstream>
 
 #include "formats/formats.hpp"
-#include "report/described.hpp"
 #include "report/render.hpp"
 
 namespace tripack::commands {
@@ -22,14 +21,10 @@ std::string help_footer() {
 
 std::string error_output(const std::string& message, const std::string& format) {
   std::ostringstream out;
-  if (format == "json") {
-    report::render_error_json(out, message);
-  } else if (format != "text") {
-    try {
-      report::write_description(out, report::Tree{{"error", message}}, format);
-    } catch (const std::exception&) {  // an unknown format: the error line on stderr says so
-      return "";
-    }
+  try {
+    report::render_error(out, message, format);
+  } catch (const std::exception&) {  // an unknown format: the error line on stderr says so
+    return "";
   }
   return out.str();
 }

@@ -15,6 +15,10 @@
 #include "jobs/stored.hpp"
 #include "report/explore_report.hpp"
 #include "report/plot.hpp"
+#include "report/results/atlas.hpp"
+#include "report/results/database.hpp"
+#include "report/results/exact.hpp"
+#include "report/results/summary.hpp"
 #include "runner/ranks.hpp"
 
 namespace tripack::commands {

@@ -7,6 +7,7 @@
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "report/diagram.hpp"
+#include "report/results/build.hpp"
 
 namespace tripack::commands {
 

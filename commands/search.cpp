@@ -12,6 +12,8 @@
 #include "jobs/billiards_search.hpp"
 #include "jobs/compare.hpp"
 #include "jobs/stored.hpp"
+#include "report/results/billiards.hpp"
+#include "report/results/search.hpp"
 
 namespace tripack::commands {
 

@@ -1,6 +1,6 @@
-// A result that names its fields once, the way HOOMD's logger marks quantities: a title and
-// (name, value) fields. Any output format renders any described result (report/described.hpp), so
-// a new output format is one writer, not one function per result type.
+// A small flat result that names its fields once, the way HOOMD's logger marks quantities: a title
+// and (name, value) fields, for summaries (explore, exact-atlas); report/results/summary.hpp
+// describes it to every output format.
 #pragma once
 
 #include <string>

@@ -650,7 +650,7 @@ void write_whole_file(const std::filesystem::path& path, const std::string& byte
   }
 }
 
-void csv_row(std::ostream& out, std::initializer_list<std::string> fields) {
+void csv_row(std::ostream& out, const std::vector<std::string>& fields) {
   bool first = true;
   for (const auto& f : fields) {
     out << (first ? "" : ",") << csv_field(f);

@@ -119,7 +119,7 @@ PointsFile read_csv_points(std::istream& in);
 PointsFile read_json_points(std::istream& in);
 
 // One CSV line of fields (csv_field each), commas between them.
-void csv_row(std::ostream& out, std::initializer_list<std::string> fields);
+void csv_row(std::ostream& out, const std::vector<std::string>& fields);
 
 // The directory, created if needed, checked writable; throws "cannot write to directory 'NAME'".
 // Called before any work, so a long run cannot end in an unwritable place.

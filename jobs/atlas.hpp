@@ -1,7 +1,7 @@
 // The atlas: for every n of a range, the best certified packings known here, merged
 // from a campaign's database and every catalogue builder whose class contains n, each certified
 // anew from its coordinates and polished in MPFR to 30 digits. The atlas is data (data/atlas.csv
-// and one coordinates file per row, written by report/atlas_report.hpp) that anyone can check.
+// and one coordinates file per row, written by jobs/atlas_files.hpp) that anyone can check.
 #pragma once
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The results database read the way the rest of tripack ranks packings: the stored
 // packings of n in the billiards search's order, labelled tNa, tNb, ... by
 // pipeline::label_order / paper_labels, and the results of `tripack db best`, `db check` and
-// `db export` (rendered by report/campaign_report.hpp). Read commands never create a database.
+// `db export` (rendered by report/results/database.hpp). Read commands never create a database.
 #pragma once
 
 #include <cstddef>

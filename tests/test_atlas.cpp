@@ -1,4 +1,4 @@
-// campaign/atlas + report/atlas_report: the atlas merges a campaign's database with the
+// campaign/atlas + report/results/atlas.hpp: the atlas merges a campaign's database with the
 // builders, and the committed data/atlas.csv is never below a builder. (tests/atlas_data_test.cpp
 // checks the committed files themselves without tripack's code.)
 #include <gtest/gtest.h>

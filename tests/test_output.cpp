@@ -1,7 +1,8 @@
-// Output formats (report/described.hpp): any result through the writers' table, from the
-// fields its JSON renderer names once, and a described result in every format.
+// Output formats (report/description.hpp): every result described once, through the writers'
+// table; the CSV writer keeps every field; a text view is followed by the fields it did not print.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -9,47 +10,73 @@
 #include "core/described.hpp"
 #include "jobs/billiards_search.hpp"
 #include "pipeline/catalogue_checks.hpp"
-#include "report/described.hpp"
 #include "report/render.hpp"
+#include "report/results/billiards.hpp"
+#include "report/results/catalogue.hpp"
+#include "report/results/search.hpp"
+#include "report/results/summary.hpp"
 #include "search/search.hpp"
 
 namespace tripack {
 namespace {
 
-TEST(Output, EveryWriterRendersAResultFromItsJsonFields) {
-  // classify 22: three members (matrix p=3 k=1, even-ripple k=3, vacancy-segment p=6 k=1).
-  std::ostringstream json;
-  report::render(json, pipeline::classify(Catalogue::load(TRIPACK_DEFAULT_CATALOGUE), 22),
-                 report::OutputFormat::Json);
-  // Every writer renders it, except CSV, whose one row cannot hold the nested list of members:
-  // it refuses the tree rather than writing it without them.
+TEST(Output, EveryWriterRendersEveryFieldOfAResult) {
+  // classify 22: four members (matrix p=3 k=1, even-ripple k=3, vacancy-segment p=6 k=1,
+  // jogged-line p=1 k=6), the rows of its table.
+  const auto catalogue = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
+  const auto result = pipeline::classify(catalogue, 22);  // points into the catalogue
   for (const auto& writer : report::output_writers()) {
     std::ostringstream out;
-    if (writer.format == "csv") {
-      EXPECT_THROW(report::write_json_description(out, json.str(), writer.format),
-                   std::invalid_argument);
-      continue;
-    }
-    report::write_json_description(out, json.str(), writer.format);
-    EXPECT_FALSE(out.str().empty()) << writer.format;
+    report::render(out, result, writer.format);
+    EXPECT_NE(out.str().find("even-ripple"), std::string::npos) << writer.format << out.str();
   }
+  std::ostringstream csv;
+  report::render(csv, result, "csv");
+  // A header, then one line per member: n (the context) on every line.
+  const std::string lines = csv.str();
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "class,k,p,display,n,seconds");
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 5) << csv.str();
   std::ostringstream text;
-  report::write_json_description(text, json.str(), "text");
-  EXPECT_NE(text.str().find("even-ripple"), std::string::npos) << text.str();
-  EXPECT_THROW(report::write_json_description(text, json.str(), "no-such-format"),
-               std::invalid_argument);
+  EXPECT_THROW(report::render(text, result, "no-such-format"), std::invalid_argument);
+}
+
+TEST(Output, CsvFlattensNestedFieldsRatherThanDroppingThem) {
+  report::Description d;
+  d.fields = report::Tree::parse(
+      R"({"n": 7, "best": {"d": "0.5", "certified": true}, "seeds": [1, 2], "runs": [{"s": 1}],
+          "rows": [{"label": "t7a"}, {"label": "t7b", "extra": null}]})");
+  d.rows = "rows";
+  std::ostringstream csv;
+  report::write_description(csv, d, "csv");
+  EXPECT_EQ(csv.str(),
+            "label,n,best.d,best.certified,seeds,runs.0.s,extra\n"
+            "t7a,7,0.5,true,1 2,1,\n"
+            "t7b,7,0.5,true,1 2,1,\n");
 }
 
 TEST(Output, ADescribedResultNamesItsFieldsOnceForEveryFormat) {
   Described d("exact atlas");
   d.number("rows", "479").text("table", "data/atlas-exact.csv");
   std::ostringstream text, json, csv;
-  report::render(text, d, report::OutputFormat::Text);
-  report::render(json, d, report::OutputFormat::Json);
-  report::render(csv, d, report::OutputFormat::Csv);
-  EXPECT_EQ(text.str(), "exact atlas\n  rows: 479\n  table: data/atlas-exact.csv\n");
-  EXPECT_NE(json.str().find("\"rows\": 479"), std::string::npos) << json.str();
+  report::render(text, d, "text");
+  report::render(json, d, "json");
+  report::render(csv, d, "csv");
+  EXPECT_EQ(text.str(),
+            "result     exact atlas\nrows       479\ntable      data/atlas-exact.csv\n");
+  EXPECT_EQ(json.str(),
+            "{\"result\":\"exact atlas\",\"rows\":479,\"table\":\"data/atlas-exact.csv\"}\n");
   EXPECT_EQ(csv.str(), "result,rows,table\nexact atlas,479,data/atlas-exact.csv\n");
+}
+
+// A field the text view does not print follows it by name: a new field reaches the text too.
+TEST(Output, TheTextViewIsFollowedByTheFieldsItDoesNotPrint) {
+  const auto catalogue = Catalogue::load(TRIPACK_DEFAULT_CATALOGUE);
+  const auto result = pipeline::classify(catalogue, 22);  // points into the catalogue
+  auto d = report::View<pipeline::Classification>::describe(result, {});
+  d.fields["new_field"] = 42;
+  std::ostringstream rest;
+  report::write_fields_not_shown(rest, d);
+  EXPECT_EQ(rest.str(), "new_field  42\n");
 }
 
 // The distinct packings of search and billiards, as text: one row per packing whose columns
@@ -100,7 +127,7 @@ TEST(Output, SearchTextColumnsAlignToTheWidestCell) {
   r.packings = packings_of_many_widths();
   r.chains.resize(3);
   std::ostringstream text;
-  report::render(text, r, report::OutputFormat::Text);
+  report::render(text, r, "text");
   expect_aligned(text.str(), "distinct packings", 3);
   EXPECT_NE(text.str().find("  t187a-inflated-t53a  d = "), std::string::npos) << text.str();
 }
@@ -110,7 +137,7 @@ TEST(Output, BilliardsTextColumnsAlignToTheWidestCell) {
   r.runs_asked = 0;
   r.packings = packings_of_many_widths();
   std::ostringstream text;
-  report::render(text, r, report::OutputFormat::Text);
+  report::render(text, r, "text");
   expect_aligned(text.str(), "distinct packings", 3);
 }
 
