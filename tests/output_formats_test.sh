@@ -97,5 +97,12 @@ b=$("$TRIPACK" classify 12 --output-format csv)
 out=$("$TRIPACK" build nonsense --k 2 --output-format=csv 2>/dev/null)
 [ "$(head -1 <<<"$out")" = "error" ] && ok || bad "csv error: $out"
 
+# A field is described once and every writer prints it: build's `verified` (one line in
+# report/results/build.hpp) in text (after the view, by name), JSON and CSV (a column by name).
+grep -qx 'verified   true' <<<"$("$TRIPACK" build four-delta --k 3)" && ok || bad "verified not in the text"
+grep -q '"verified":true' <<<"$("$TRIPACK" build four-delta --k 3 --json)" && ok || bad "verified not in the JSON"
+/usr/bin/python3 -c 'import csv, sys; assert next(csv.DictReader(sys.stdin))["verified"] == "true"' \
+  <<<"$("$TRIPACK" build four-delta --k 3 --csv)" && ok || bad "verified not in the CSV"
+
 echo "output formats ($count commands): $pass passed, $fail failed"
 [ "$fail" -eq 0 ]

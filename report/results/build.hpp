@@ -64,6 +64,7 @@ inline Tree build_tree(const BuildResult& b, const DescribeOptions& o) {
   }
   if (b.exact) j["exact_check"] = b.exact->ok;
   if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);
+  j["verified"] = b.verified();  // counts, geometry, certificate and exact check all hold
   if (o.points) j["points"] = points_tree(pk);
   return j;
 }
