@@ -88,4 +88,8 @@ std::string tool_version() {
   return "tripack " TRIPACK_VERSION;
 }
 
+JobContext job_context(const Context& context, ProgressFn progress) {
+  return {context.cancel, std::move(progress), tool_version()};
+}
+
 }  // namespace tripack::commands

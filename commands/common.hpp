@@ -87,4 +87,7 @@ void claim_ending(const Context& context);
 // "tripack VERSION": what the database records as the tool of a run.
 std::string tool_version();
 
+// A long job's context (core/progress.hpp): the command's cancel token, `progress`, the version.
+JobContext job_context(const Context& context, ProgressFn progress = {});
+
 }  // namespace tripack::commands

@@ -104,11 +104,8 @@ class DbImport : public RequestCommand<jobs::ImportRequest> {
       true};
 
   int run(const Context& c) override {
-    request.cancel = c.cancel;
-    request.tool_version = tool_version();
     report::ProgressLine progress(std::cerr, terminal_line("import", out, 2));
-    request.progress = progress.callback();
-    const auto result = jobs::import_packings(request);
+    const auto result = jobs::import_packings(request, job_context(c, progress.callback()));
     progress.finish();
     if (result.cancelled) return cancelled("nothing was stored");
     for (const auto& x : result.packings)

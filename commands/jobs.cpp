@@ -81,12 +81,10 @@ class Explore : public Command {
                                                                  : std::vector<jobs::AtlasGap>{},
                                jobs::read_exact_atlas(csv.parent_path() / "atlas-exact.csv")};
     }
-    const CancelToken never;
     auto line = job_line(kInfo.name, 0);
     line.log_stages = true;  // a log gets one line per stage: building, search, billiards, ...
     report::ProgressLine progress(std::cerr, line);
-    const auto result =
-        jobs::explore(catalogue, settings, c.cancel ? *c.cancel : never, progress.callback());
+    const auto result = jobs::explore(catalogue, settings, job_context(c, progress.callback()));
     progress.finish();
     report::ExploreReportOptions report_options;
     report_options.atlas = shown ? &*shown : nullptr;
@@ -99,7 +97,7 @@ class Explore : public Command {
                      .number("seconds", fmt::format("{:.1f}", result.seconds))
                      .text("report", (dir / "index.html").string()),
                  summary);
-    return result.interrupted ? cancelled("the report holds what finished") : 0;
+    return result.cancelled ? cancelled("the report holds what finished") : 0;
   }
 };
 
@@ -113,15 +111,14 @@ class Campaign : public RequestCommand<jobs::CampaignRequest, true> {
       true};
 
   int run(const Context& c) override {
-    request.tool_version = tool_version();
     // Under mpirun every rank builds the executor (MPI starts there); only rank 0 reports. In a
     // log every recorded unit is one line (what a batch job, or the soak test, checks after a
     // kill).
     const std::unique_ptr<Executor> executor = executor_for_launch(request.threads);
     std::optional<report::ProgressLine> progress;
     if (executor->rank() == 0) progress.emplace(std::cerr, job_line(kInfo.name, 1));
-    const auto result = jobs::run_campaign(request, *executor, c.cancel,
-                                           progress ? progress->callback() : ProgressFn{});
+    const auto result = jobs::run_campaign(
+        request, *executor, job_context(c, progress ? progress->callback() : ProgressFn{}));
     if (progress) progress->finish();
     if (result.rank != 0) return 0;  // under mpirun only rank 0 reports
     // The database's best of every n in the range, labelled like `db best`.
@@ -160,9 +157,10 @@ class Atlas : public Command {
     const Catalogue catalogue = load_catalogue(c);
     const std::filesystem::path dir = writable_directory(out_dir);
     report::ProgressLine progress(std::cerr, job_line(kInfo.name, 20));
-    const auto atlas = jobs::build_atlas(catalogue, db, settings, c.cancel, progress.callback());
+    const auto atlas =
+        jobs::build_atlas(catalogue, db, settings, job_context(c, progress.callback()));
     progress.finish();
-    if (atlas.interrupted) return cancelled("nothing written");
+    if (atlas.cancelled) return cancelled("nothing written");
     jobs::write_atlas(atlas, dir);
     print_result(atlas, out);
     if (!atlas.errors.empty() || !atlas.missing.empty())
@@ -203,7 +201,7 @@ class ExactAtlas : public RequestCommand<jobs::ExactAtlasSettings> {
     if (request.out.empty()) request.out = request.atlas.parent_path();
     writable_directory(request.out.string());
     report::ProgressLine progress(std::cerr, job_line(kInfo.name, 1));
-    const auto result = jobs::build_exact_atlas(request, c.cancel, progress.callback());
+    const auto result = jobs::build_exact_atlas(request, job_context(c, progress.callback()));
     progress.finish();
     std::map<std::string, int> proofs;
     for (const auto& r : result.done) ++proofs[r.proof];

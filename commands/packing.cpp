@@ -4,10 +4,12 @@
 
 #include "commands/common.hpp"
 #include "formats/formats.hpp"
+#include "jobs/build_scan.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "report/diagram.hpp"
 #include "report/results/build.hpp"
+#include "report/results/summary.hpp"
 
 namespace tripack::commands {
 
@@ -60,18 +62,17 @@ class Build : public Command {
     const Catalogue catalogue = load_catalogue(c);
     // Builds over 2 s show their stage (the LP-free certificate of 4Delta(224) takes 14 s).
     report::ProgressLine progress(std::cerr, terminal_line(kInfo.name, out, 2));
-    settings.progress = progress.callback();
-    settings.cancel = c.cancel;
+    const JobContext job = job_context(c, progress.callback());
     pipeline::BestBuild result;
     try {
       if (n) {
         if (!member.class_id.empty() || member.k != kUnsetK || member.p)
           throw std::invalid_argument("build --n N takes no class, --k or --p");
-        result = pipeline::build_best_for_n(catalogue, n, settings);
+        result = pipeline::build_best_for_n(catalogue, n, settings, job);
       } else {
         if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
         if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
-        result.best = pipeline::build_and_certify(catalogue, member, settings);
+        result.best = pipeline::build_and_certify(catalogue, member, settings, job);
       }
     } catch (const Cancelled&) {
       claim_ending(c);
@@ -194,10 +195,35 @@ class Draw : public Command {
   }
 };
 
+class BuildScan : public RequestCommand<jobs::BuildScanRequest> {
+ public:
+  static constexpr CommandInfo kInfo{
+      "build-scan",
+      "'build --n' for every N of a range, a row per N appended to --table; resumable (a rerun "
+      "skips the N already in the table)",
+      true};
+
+  int run(const Context& c) override {
+    report::ProgressLine progress(std::cerr, job_line(kInfo.name, 1));
+    const auto result =
+        jobs::scan_builds(load_catalogue(c), request, job_context(c, progress.callback()));
+    progress.finish();
+    print_result(Described{"build scan"}
+                     .number("rows", std::to_string(result.rows))
+                     .number("already_done", std::to_string(result.skipped))
+                     .number("built_now", std::to_string(result.built))
+                     .number("certified_now", std::to_string(result.certified))
+                     .number("seconds", fmt::format("{:.1f}", result.seconds))
+                     .text("table", request.table.string()),
+                 out);
+    return result.cancelled ? cancelled("the table holds the rows that finished") : 0;
+  }
+};
+
 }  // namespace
 
 std::vector<CommandEntry> packing_commands() {
-  return {entry<Build>(), entry<Analyze>(), entry<Draw>()};
+  return {entry<Build>(), entry<BuildScan>(), entry<Analyze>(), entry<Draw>()};
 }
 
 }  // namespace tripack::commands

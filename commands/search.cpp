@@ -33,7 +33,6 @@ struct BilliardsRuns {
   void prepare(const Context& c) {
     search.scene = scene.empty() ? default_scene(static_cast<int>(n)) : load_scene(scene);
     jobs::prepare_scene(load_catalogue(c), search.scene, n);
-    search.cancel = c.cancel;
   }
 };
 
@@ -69,8 +68,7 @@ class Billiards : public Command {
     runs.prepare(c);
     report::ProgressLine progress(
         std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
-    runs.search.progress = progress.callback();
-    const auto result = jobs::search_billiards(runs.search);
+    const auto result = jobs::search_billiards(runs.search, job_context(c, progress.callback()));
     progress.finish();
     // Files first: what was found is kept even if printing fails.
     if (!dir.empty())
@@ -81,7 +79,7 @@ class Billiards : public Command {
       const auto& best = result.packings.front();
       diagrams.draw(best.pattern, best.label, best.forces);
     }
-    return result.cancelled() ? cancelled("the result holds the runs that finished") : 0;
+    return result.cancelled ? cancelled("the result holds the runs that finished") : 0;
   }
 };
 
@@ -100,12 +98,12 @@ class Compare : public RequestCommand<BilliardsRuns, true> {
     runs.prepare(c);
     report::ProgressLine progress(
         std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
-    runs.search.progress = progress.callback();
-    const auto result = jobs::compare_constructed(catalogue, runs.n, runs.search, {});
+    const auto result = jobs::compare_constructed(catalogue, runs.n, runs.search, {},
+                                                  job_context(c, progress.callback()));
     progress.finish();
     print_result(result, out);
-    return result.billiards.cancelled() ? cancelled("the comparison holds the runs that finished")
-                                        : 0;
+    return result.billiards.cancelled ? cancelled("the comparison holds the runs that finished")
+                                      : 0;
   }
 };
 
@@ -130,7 +128,6 @@ class Search : public RequestCommand<search::SearchRequest, true> {
     diagrams.declare(o);
   }
   int run(const Context& c) override {
-    request.cancel = c.cancel;
     std::optional<Catalogue> catalogue;  // read only when the chains start from the builders
     if (request.builder_starts && request.method == search::SearchMethod::BasinHopping) {
       catalogue.emplace(load_catalogue(c));
@@ -138,8 +135,7 @@ class Search : public RequestCommand<search::SearchRequest, true> {
     }
     report::ProgressLine progress(std::cerr,
                                   terminal_line(fmt::format("search n={}", request.n), out));
-    request.progress = progress.callback();
-    const auto result = jobs::search_and_record(request, db, tool_version());
+    const auto result = jobs::search_and_record(request, db, job_context(c, progress.callback()));
     progress.finish();
     for (const auto& note : result.notes) std::cerr << "tripack: note: " << note << "\n";
     print_result(result.search, out);

@@ -2,7 +2,7 @@
 // One Progress type for all of them (a billiards run, an analysis, a search, a campaign, the
 // atlas, the explorer, the accuracy study, an import), rendered by one function
 // (report/progress_line.hpp); one CancelToken that main() sets on Ctrl-C or SIGTERM. Neither is
-// global: a job receives both.
+// global: a job receives both, in its JobContext.
 #pragma once
 
 #include <atomic>
@@ -87,5 +87,19 @@ inline void throw_if_cancelled(const CancelToken* token) {
 inline bool cancelled(const CancelToken* token) {
   return token && token->cancelled();
 }
+
+// What every long job is given, the one way it is given (docs/architecture.md, "Long jobs"): how
+// it is asked to stop, where it reports its progress, and the tool's version it records with what
+// it stores. A job's result says `cancelled` when the token stopped it before every item ran.
+struct JobContext {
+  const CancelToken* cancel = nullptr;
+  ProgressFn progress;
+  std::string tool_version;
+
+  bool cancelled() const { return tripack::cancelled(cancel); }
+  void report(const Progress& p) const {
+    if (progress) progress(p);
+  }
+};
 
 }  // namespace tripack

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include "core/io.hpp"
@@ -71,15 +73,15 @@ std::vector<std::string> split_csv(const std::string& line) {
   return fields;
 }
 
-std::vector<TableRow> read_table(const std::filesystem::path& csv, const TableFormat& format,
-                                 bool missing_is_empty) {
+std::vector<TableRecord> read_table(const std::filesystem::path& csv, const TableFormat& format,
+                                    bool missing_is_empty) {
   std::ifstream in(csv);
   if (!in) {
     if (missing_is_empty) return {};
     throw std::runtime_error("cannot read the " + format.what + " " + csv.string());
   }
   std::string line;
-  std::vector<TableRow> rows;
+  std::vector<TableRecord> rows;
   long long number = 0;
   auto fail = [&](const std::string& why) {
     throw std::runtime_error(fmt::format("{}:{}: {}", csv.string(), number, why));
@@ -90,7 +92,9 @@ std::vector<TableRow> read_table(const std::filesystem::path& csv, const TableFo
     if (number == 1) {
       if (f != format.columns)
         fail("not a tripack " + format.what + " (its header is not " +
-             table_header(format).substr(0, 200) + ")");
+             table_header(format).substr(
+                 0, std::min<std::size_t>(200, table_header(format).size() - 1)) +
+             ")");
       continue;
     }
     if (line.empty()) continue;
@@ -100,6 +104,42 @@ std::vector<TableRow> read_table(const std::filesystem::path& csv, const TableFo
   }
   if (number == 0) fail("empty file");
   return rows;
+}
+
+std::set<std::string> keys_in_table(const std::filesystem::path& csv, const TableFormat& format,
+                                    std::size_t key_column,
+                                    const std::function<bool(const TableRecord&)>& counts) {
+  std::set<std::string> keys;
+  for (const auto& row : read_table(csv, format, true))
+    if (!counts || counts(row)) keys.insert(row.fields.at(key_column));
+  return keys;
+}
+
+void sort_table(const std::filesystem::path& csv, const TableFormat& format, std::size_t key_column,
+                const std::vector<std::string>& order) {
+  std::map<std::string, std::size_t> rank;
+  for (std::size_t i = 0; i < order.size(); ++i) rank.emplace(order[i], i);
+  std::map<std::string, std::vector<std::string>> last;  // a key's last row wins
+  std::vector<std::string> keys;                         // in the file's order
+  for (auto& row : read_table(csv, format, true)) {
+    const std::string key = row.fields.at(key_column);
+    if (!last.count(key)) keys.push_back(key);
+    last[key] = std::move(row.fields);
+  }
+  std::stable_sort(keys.begin(), keys.end(), [&](const std::string& a, const std::string& b) {
+    const auto ra = rank.find(a), rb = rank.find(b);
+    return (ra == rank.end() ? order.size() : ra->second) <
+           (rb == rank.end() ? order.size() : rb->second);
+  });
+  std::string text = table_header(format);
+  for (const auto& key : keys) text += table_line(last[key]);
+  const std::filesystem::path temporary = csv.string() + ".tmp";
+  {
+    std::ofstream out(temporary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  std::filesystem::rename(temporary, csv);
 }
 
 }  // namespace tripack

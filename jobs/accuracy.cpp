@@ -630,7 +630,7 @@ double correct_digits(const std::string& value, const std::string& reference, do
 }
 
 AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySettings& settings,
-                               const CancelToken* cancel, const ProgressFn& progress) {
+                               const JobContext& job) {
   const auto start = Clock::now();
   for (long long n : settings.n)
     if (n < 2) throw std::invalid_argument("measure_accuracy: n must be at least 2");
@@ -640,7 +640,7 @@ AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySetting
   std::vector<std::pair<std::string, std::function<void()>>> tasks;
   std::optional<ProgressCounter> counter;  // once the items are counted
   auto say = [&](const std::string& what) {
-    if (progress && counter) progress(counter->snapshot(what));
+    if (job.progress && counter) job.progress(counter->snapshot(what));
   };
   for (long long n : settings.n)
     tasks.emplace_back(fmt::format("n = {}", n),
@@ -658,10 +658,9 @@ AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySetting
     return std::string();
   };
   items.finished = [&](std::size_t i, const std::string&) {
-    const Progress p = counter->finished(tasks[i].first);
-    if (progress) progress(p);
+    job.report(counter->finished(tasks[i].first));
   };
-  study.interrupted = ThreadExecutor(1).run_items(items, cancel).cancelled;
+  study.cancelled = ThreadExecutor(1).run_items(items, job.cancel).cancelled;
   study.seconds = seconds_since(start);
   return study;
 }

@@ -38,7 +38,7 @@ struct HardCase {
 struct AccuracyStudy {
   std::vector<AccuracyRow> rows;
   std::vector<HardCase> hard_cases;
-  bool interrupted = false;  // cancelled before every item ran
+  bool cancelled = false;  // stopped before every item ran
   double seconds = 0;
 };
 
@@ -54,10 +54,9 @@ struct AccuracySettings {
 };
 
 // The rows and hard cases one item at a time on the job runner (stage "accuracy"); stops between
-// items when cancelled (interrupted in the result).
+// items when cancelled (`cancelled` in the result).
 AccuracyStudy measure_accuracy(const Catalogue& catalogue, const AccuracySettings& settings,
-                               const CancelToken* cancel = nullptr,
-                               const ProgressFn& progress = {});
+                               const JobContext& job = {});
 
 // Correct significant digits of `value` against `reference`, -log10(|value - reference| /
 // |reference|), both positive decimal strings in fixed notation, computed from their digits (a

@@ -208,8 +208,7 @@ std::string atlas_delta(const PackingRecord& row) {
 }
 
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
-                        const AtlasSettings& settings, const CancelToken* cancel,
-                        const ProgressFn& progress) {
+                        const AtlasSettings& settings, const JobContext& job) {
   const auto start = Clock::now();
   AtlasResult result;
   result.settings = settings;
@@ -267,10 +266,9 @@ AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
   };
   items.finished = [&](std::size_t i, const std::string&) {
     outcomes[pending[i]] = std::move(found[i]);
-    const Progress p = counter.finished(fmt::format("n = {}", pending[i]));
-    if (progress) progress(p);
+    job.report(counter.finished(fmt::format("n = {}", pending[i])));
   };
-  result.interrupted = ThreadExecutor(settings.threads).run_items(items, cancel).cancelled;
+  result.cancelled = ThreadExecutor(settings.threads).run_items(items, job.cancel).cancelled;
 
   for (auto& [n, outcome] : outcomes) {
     result.errors.insert(result.errors.end(), outcome.errors.begin(), outcome.errors.end());

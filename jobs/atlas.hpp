@@ -92,16 +92,15 @@ struct AtlasResult {
   std::vector<AtlasGap> gaps;       // by class, then p, then k
   std::vector<long long> missing;   // n in the range without any certified packing
   std::vector<std::string> errors;  // one line each: a candidate that failed (the rest went on)
-  bool interrupted = false;
+  bool cancelled = false;
   double seconds = 0;
 };
 
 // Reads the database (read-only), builds every catalogue member of each n, certifies and polishes
 // every candidate, ranks and labels them like `tripack billiards`. Throws store::StoreError for
 // the database. The values of n are the job runner's items (stage "atlas", one report per n);
-// stops between them when `cancel` is set (interrupted in the result).
+// stops between them when its job is cancelled (`cancelled` in the result).
 AtlasResult build_atlas(const Catalogue& catalogue, const std::string& db_path,
-                        const AtlasSettings& settings, const CancelToken* cancel,
-                        const ProgressFn& progress);
+                        const AtlasSettings& settings, const JobContext& job = {});
 
 }  // namespace tripack::jobs

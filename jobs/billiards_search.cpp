@@ -38,9 +38,9 @@ void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_
 namespace {
 
 // Every run on the runner's threads; run r uses seed + r.
-std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
+std::vector<RunOutcome> run_all(const BilliardsSearch& search, const JobContext& job) {
   std::vector<RunOutcome> runs(static_cast<std::size_t>(search.runs));
-  const ProgressFn progress = serialised(search.progress);
+  const ProgressFn progress = serialised(job.progress);
   ProgressCounter counter("billiards", search.runs);
   JobItems items;
   items.count = runs.size();
@@ -49,7 +49,7 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
     run.seed = search.seed + r;
     std::mt19937_64 rng(run.seed);
     BilliardsOptions options;
-    options.cancel = search.cancel;
+    options.cancel = job.cancel;
     if (progress)
       options.progress = [&, r](const Progress& live) {
         Progress p = live;
@@ -72,7 +72,7 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search) {
     Progress p = counter.finished(fmt::format("run {}", r), runs[r].sim.packing.d);
     if (progress) progress(p);
   };
-  ThreadExecutor(search.threads).run_items(items, search.cancel);
+  ThreadExecutor(search.threads).run_items(items, job.cancel);
   return runs;
 }
 
@@ -101,14 +101,15 @@ std::vector<PackingRecord> distinct_of(std::vector<RunOutcome>& runs, long long 
 
 }  // namespace
 
-BilliardsSearchResult search_billiards(const BilliardsSearch& search) {
+BilliardsSearchResult search_billiards(const BilliardsSearch& search, const JobContext& job) {
   if (search.runs < 1) throw std::invalid_argument("--runs must be at least 1");
   const auto start = Clock::now();
   BilliardsSearchResult result;
   result.scene = search.scene;
   result.runs_asked = search.runs;
-  result.runs = run_all(search);
+  result.runs = run_all(search, job);
   std::erase_if(result.runs, [](const RunOutcome& run) { return !run.ran; });
+  result.cancelled = result.runs.size() < static_cast<std::size_t>(search.runs);
   result.packings = distinct_of(result.runs, search.scene.n);
   result.seconds = seconds_since(start);
   return result;

@@ -25,11 +25,6 @@ struct BilliardsSearch {
   std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
   int threads = 1;
   bool certify = true;  // relax, bonds, rigidity, stress of every end state
-  // Stage "billiards": a live snapshot of a run under way (item "run R") about every 0.5 s, and
-  // one report per finished run (d: its billiards d). Called one at a time.
-  ProgressFn progress;
-  // When set, no new run starts (runs under way finish); the result holds the runs done.
-  const CancelToken* cancel = nullptr;
 
   // The runs (the scene comes from N or --scene: the commands' BilliardsScene).
   void declare(OptionList& o) {
@@ -52,7 +47,7 @@ struct BilliardsSearchResult {
   Scene scene;
   int runs_asked = 0;
   std::vector<RunOutcome> runs;  // in seed order
-  bool cancelled() const { return runs.size() < static_cast<std::size_t>(runs_asked); }
+  bool cancelled = false;        // stopped before every run ran: `runs` holds those that did
   // The distinct packings the runs ended in (core/record.hpp: one per packing, each with its
   // billiards source: first seed and runs), ranked and labelled, best first.
   std::vector<PackingRecord> packings;
@@ -63,6 +58,9 @@ struct BilliardsSearchResult {
 // checked against `expected_n` (0: any). Then the scene is validated. Throws one-line errors.
 void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_n);
 
-BilliardsSearchResult search_billiards(const BilliardsSearch& search);
+// Progress: stage "billiards", a live snapshot of a run under way (item "run R") about every
+// 0.5 s, and one report per finished run (d: its billiards d), one at a time. Cancelled: no new
+// run starts (runs under way finish).
+BilliardsSearchResult search_billiards(const BilliardsSearch& search, const JobContext& job = {});
 
 }  // namespace tripack::jobs

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <random>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -31,16 +32,17 @@ search::SearchRequest search_of(const CampaignRequest& request, long long n, std
 }
 
 // A search unit: one chain from random starts, recorded with its best certified packing.
-store::RunRecord search_unit(const CampaignRequest& request, const WorkUnit& unit) {
+store::RunRecord search_unit(const CampaignRequest& request, const WorkUnit& unit,
+                             const std::string& tool_version) {
   const search::SearchRequest search = search_of(request, unit.n, unit.seed);
   try {
-    return run_record_of(search::run_search(search), 0, request.tool_version);
+    return run_record_of(search::run_search(search), 0, tool_version);
   } catch (const std::exception& e) {
     store::RunRecord record;
     record.n = unit.n;
     record.seed = unit.seed;
     record.method = search::search_method(search);
-    record.tool_version = request.tool_version;
+    record.tool_version = tool_version;
     record.outcome = std::string("error: ") + e.what();
     return record;
   }
@@ -48,12 +50,13 @@ store::RunRecord search_unit(const CampaignRequest& request, const WorkUnit& uni
 
 // One unit: a billiards run from the seeded random start, then the analysis; certified end
 // states carry their packing.
-store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit) {
-  if (request.search_seconds) return search_unit(request, unit);
+store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit,
+                          const std::string& tool_version) {
+  if (request.search_seconds) return search_unit(request, unit, tool_version);
   store::RunRecord record;
   record.n = unit.n;
   record.seed = unit.seed;
-  record.tool_version = request.tool_version;
+  record.tool_version = tool_version;
   try {
     Scene scene = request.scene ? *request.scene : default_scene(static_cast<int>(unit.n));
     scene.n = static_cast<int>(unit.n);
@@ -66,7 +69,7 @@ store::RunRecord run_unit(const CampaignRequest& request, const WorkUnit& unit) 
     if (analysis.certified()) {
       PackingRecord found = pipeline::record_of(analysis);
       found.sources.push_back({PackingSource::Kind::Billiards, "", unit.seed, 1, 1});
-      record.packing = store::stored_of(found, request.tool_version);
+      record.packing = store::stored_of(found, tool_version);
     }
   } catch (const std::exception& e) {
     record.outcome = std::string("error: ") + e.what();
@@ -108,16 +111,18 @@ std::string recorded_line(const store::RunRecord& run) {
 }  // namespace
 
 CampaignResult run_campaign(const CampaignRequest& request, const Executor& executor,
-                            const CancelToken* cancel, const ProgressFn& progress) {
+                            const JobContext& job) {
   const int ranks = launched_ranks();
   check(request, ranks);
   const std::vector<WorkUnit> units = units_of(request);
   JobItems items;
   items.count = units.size();
-  items.run = [&](std::size_t i) { return encode_run(run_unit(request, units[i])); };
+  items.run = [&](std::size_t i) {
+    return encode_run(run_unit(request, units[i], job.tool_version));
+  };
   if (executor.rank() != 0) {
     CampaignResult result;
-    const JobOutcome outcome = executor.run_items(items, cancel);
+    const JobOutcome outcome = executor.run_items(items, job.cancel);
     result.ranks = outcome.ranks;
     result.rank = outcome.rank;
     return result;
@@ -129,19 +134,21 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
     db.emplace(store::ResultsDb::open(request.db));
   } catch (...) {
     executor.run_items(JobItems{0, std::vector<std::size_t>{}, items.run, {}},
-                       cancel);  // stop every rank
+                       job.cancel);  // stop every rank
     throw;
   }
-  std::vector<std::size_t> pending;
+  // Resumed: the units the database already holds a run of (same n, seed and method) are done.
   const std::string method = request.search_seconds
                                  ? search::search_method(search_of(request, 0, 0))
                                  : store::RunRecord{}.method;
-  for (std::size_t i = 0; i < units.size(); ++i)
-    if (!db->has_run(units[i].n, units[i].seed, method)) pending.push_back(i);
+  const auto key = [](long long n, std::uint64_t seed) { return fmt::format("{}:{}", n, seed); };
+  std::set<std::string> done;
+  for (long long n = std::max(request.n_first, 2LL); n <= request.n_last; ++n)
+    for (std::uint64_t seed : db->finished_seeds(n, method)) done.insert(key(n, seed));
   result.units = static_cast<long long>(units.size());
-  result.skipped = result.units - static_cast<long long>(pending.size());
-  ProgressCounter counter("campaign", static_cast<long long>(pending.size()));
-  items.order = pending;
+  result.skipped = skip_done(
+      items, [&](std::size_t i) { return key(units[i].n, units[i].seed); }, done);
+  ProgressCounter counter("campaign", result.units - result.skipped);
   items.finished = [&](std::size_t i, const std::string& encoded) {
     const store::RunRecord run = decode_run(encoded);
     if (run.n != units[i].n || run.seed != units[i].seed)
@@ -152,14 +159,12 @@ CampaignResult run_campaign(const CampaignRequest& request, const Executor& exec
     ++result.recorded;
     result.certified += run.packing.has_value();
     result.errors += run.outcome.rfind("error: ", 0) == 0;
-    if (progress) {
-      Progress p =
-          counter.finished(recorded_line(run), run.packing ? std::stold(run.packing->d) : 0.0L);
-      p.skipped = result.skipped;
-      progress(p);
-    }
+    Progress p =
+        counter.finished(recorded_line(run), run.packing ? std::stold(run.packing->d) : 0.0L);
+    p.skipped = result.skipped;
+    job.report(p);
   };
-  const JobOutcome outcome = executor.run_items(items, cancel);
+  const JobOutcome outcome = executor.run_items(items, job.cancel);
   result.cancelled = outcome.cancelled;
   result.ranks = outcome.ranks;
   for (auto& best : db->best_per_n())

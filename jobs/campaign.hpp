@@ -30,7 +30,6 @@ struct CampaignRequest {
   // Set: every unit is a search chain (search/search.hpp) of this many seconds from random starts
   // instead of one billiards run; its method is "search S s".
   std::optional<double> search_seconds;
-  std::string tool_version;
 
   void declare(OptionList& o) {
     o.parsed(
@@ -76,6 +75,6 @@ struct CampaignResult {
 // recorded stays). Rank 0 is the only process that opens the database; the other ranks' result is
 // empty.
 CampaignResult run_campaign(const CampaignRequest& request, const Executor& executor,
-                            const CancelToken* cancel, const ProgressFn& progress);
+                            const JobContext& job);
 
 }  // namespace tripack::jobs

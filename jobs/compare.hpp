@@ -25,6 +25,7 @@ struct ConstructedVsBilliards {
 // `search.scene` may be left empty: the default scene for n is used then.
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
                                            BilliardsSearch search,
-                                           const pipeline::BuildSettings& settings);
+                                           const pipeline::BuildSettings& settings,
+                                           const JobContext& job = {});
 
 }  // namespace tripack::jobs

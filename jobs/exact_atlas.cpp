@@ -23,74 +23,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The labels already in the table (its second column); not those whose proof is "pending" (a
-// row whose packing changed in the atlas: docs/exact.md), and with `except_none` not those whose
-// proof is "none": they are run again.
-std::set<std::string> labels_in(const fs::path& csv, bool except_none) {
-  std::set<std::string> labels;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    const auto a = line.find(','), b = line.find(',', a + 1);
-    if (a == std::string::npos || b == std::string::npos) continue;
-    const auto fields = split_csv(line);
-    const std::string proof = fields.size() > 6 ? fields[6] : "";
-    if (proof == "pending" || (except_none && proof == "none")) continue;
-    labels.insert(line.substr(a + 1, b - a - 1));
-  }
-  return labels;
-}
+// The table's columns: n, label, degree, polynomial, root_low, root_high, proof, ...
+constexpr std::size_t kLabelColumn = 1, kProofColumn = 6;
 
-// The table in the atlas's order (rows of labels the atlas no longer has go last), written to a
-// temporary file and renamed over the old one.
-void sort_table(const fs::path& csv, const std::vector<std::string>& order,
-                const std::string& header) {
-  std::map<std::string, std::size_t> rank;
-  for (std::size_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  // A label's last row wins (a row run again is appended after its old one).
-  std::map<std::string, std::string> last;
-  std::vector<std::string> labels;
-  while (std::getline(in, line)) {
-    const auto a = line.find(','), b = line.find(',', a + 1);
-    const std::string label = a == std::string::npos ? "" : line.substr(a + 1, b - a - 1);
-    if (!last.count(label)) labels.push_back(label);
-    last[label] = line;
-  }
-  std::vector<std::pair<std::size_t, std::string>> rows;
-  for (const auto& label : labels)
-    rows.emplace_back(rank.count(label) ? rank[label] : order.size(), last[label]);
-  std::stable_sort(rows.begin(), rows.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  const fs::path temporary = csv.string() + ".tmp";
-  {
-    std::ofstream out(temporary);
-    out << header << "\n";
-    for (const auto& r : rows) out << r.second << "\n";
-    if (!out) throw std::runtime_error("cannot write " + temporary.string());
-  }
-  fs::rename(temporary, csv);
-}
-
-}  // namespace
-
-std::string exact_csv_header() {
-  const std::string line = table_header(exact_atlas_table_format());
-  return line.substr(0, line.size() - 1);
-}
-
-std::string exact_csv_row(const pipeline::ExactResult& r) {
+// A row of the table (with its line break).
+std::string exact_table_line(const pipeline::ExactResult& r) {
   const auto& p = r.polynomial;
-  const std::string line = table_line(
+  return table_line(
       {std::to_string(r.n), r.label, p.found ? std::to_string(p.polynomial.degree()) : "",
        p.found ? p.polynomial.pari("x") : "", p.found ? p.root.low : "", p.found ? p.root.high : "",
        r.proof, r.reason,
        fmt::format("{:.2f}", r.seconds_polish + r.seconds_polynomial + r.seconds_existence)});
-  return line.substr(0, line.size() - 1);
 }
+
+}  // namespace
 
 std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
   std::map<std::string, ExactAtlasRow> rows;
@@ -113,21 +59,25 @@ std::map<std::string, ExactAtlasRow> read_exact_atlas(const fs::path& csv) {
   return rows;
 }
 
-ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const CancelToken* cancel,
-                                   const ProgressFn& progress) {
+ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const JobContext& job) {
   const auto start = Clock::now();
   const std::vector<PackingRecord> rows = read_atlas(settings.atlas);
   fs::create_directories(settings.out / "exact");
   const fs::path csv = settings.out / "atlas-exact.csv";
-  const std::string header = exact_csv_header();
   if (!fs::exists(csv)) {
     std::ofstream out(csv);
-    out << header << "\n";
+    out << table_header(exact_atlas_table_format());
     if (!out) throw std::runtime_error("cannot write " + csv.string());
   }
-  const std::set<std::string> done = labels_in(csv, settings.retry_none);
+  // Done: the labels in the table, except those whose proof is "pending" (a row whose packing
+  // changed in the atlas: docs/exact.md) and, with --retry-none, those whose proof is "none".
+  const std::set<std::string> done =
+      keys_in_table(csv, exact_atlas_table_format(), kLabelColumn, [&](const TableRecord& row) {
+        const std::string& proof = row.fields[kProofColumn];
+        return proof != "pending" && !(settings.retry_none && proof == "none");
+      });
   ExactAtlasResult result;
-  std::vector<std::size_t> to_run;
+  std::vector<std::size_t> chosen;  // the rows of the atlas asked for (--n), in its order
   std::vector<std::string> order;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const auto& row = rows[i];
@@ -135,21 +85,20 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
                                                 row.n()) == settings.n_values.end())
       continue;
     order.push_back(row.label);
-    ++result.rows;
-    if (done.count(row.label))
-      ++result.skipped;
-    else
-      to_run.push_back(i);
+    chosen.push_back(i);
   }
+  result.rows = static_cast<long long>(chosen.size());
   // Largest n first: the slowest start early.
-  std::stable_sort(to_run.begin(), to_run.end(),
+  std::stable_sort(chosen.begin(), chosen.end(),
                    [&](std::size_t a, std::size_t b) { return rows[a].n() > rows[b].n(); });
   std::vector<pipeline::ExactResult> found(rows.size());
   std::ofstream table(csv, std::ios::app);
-  ProgressCounter counter("exact", static_cast<long long>(to_run.size()));
   JobItems items;
   items.count = rows.size();
-  items.order = to_run;
+  items.order = chosen;
+  result.skipped = static_cast<std::size_t>(skip_done(
+      items, [&](std::size_t i) { return rows[i].label; }, done));
+  ProgressCounter counter("exact", static_cast<long long>(items.order->size()));
   items.run = [&](std::size_t i) {
     const PackingRecord& row = rows[i];
     pipeline::ExactResult& r = found[i];
@@ -175,17 +124,16 @@ ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const Can
                                           .generic_string()});
       if (!cert) throw std::runtime_error("cannot write the certificate of " + r.label);
     }
-    table << exact_csv_row(r) << "\n" << std::flush;
+    table << exact_table_line(r) << std::flush;
     if (!table) throw std::runtime_error("cannot append to " + csv.string());
     result.done.push_back(r);
-    if (progress)
-      progress(counter.finished(fmt::format(
-          "{} (n = {}): {}{}", r.label, r.n, r.proof,
-          r.polynomial.found ? fmt::format(", degree {}", r.polynomial.polynomial.degree()) : "")));
+    job.report(counter.finished(fmt::format(
+        "{} (n = {}): {}{}", r.label, r.n, r.proof,
+        r.polynomial.found ? fmt::format(", degree {}", r.polynomial.polynomial.degree()) : "")));
   };
-  result.cancelled = ThreadExecutor(settings.threads).run_items(items, cancel).cancelled;
+  result.cancelled = ThreadExecutor(settings.threads).run_items(items, job.cancel).cancelled;
   table.close();
-  sort_table(csv, order, header);
+  sort_table(csv, exact_atlas_table_format(), kLabelColumn, order);
   result.seconds = seconds_since(start);
   return result;
 }

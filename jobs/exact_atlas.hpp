@@ -51,12 +51,9 @@ struct ExactAtlasResult {
   double seconds = 0;
 };
 
-// data/atlas-exact.csv: n, label, degree, polynomial (PARI syntax in x), root_low, root_high
-// (rationals), proof (exact, existence, none), reason, seconds.
-std::string exact_csv_header();
-std::string exact_csv_row(const pipeline::ExactResult& r);
-
-// A row of atlas-exact.csv as read back (strings as written).
+// data/atlas-exact.csv (formats/tables.hpp): n, label, degree, polynomial (PARI syntax in x),
+// root_low, root_high (rationals), proof (exact, existence, none), reason, seconds; a row as read
+// back (strings as written):
 struct ExactAtlasRow {
   long long n = 0;
   std::string label, degree, polynomial, root_low, root_high, proof, reason;
@@ -94,7 +91,6 @@ pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& req
 
 // Throws for an unreadable atlas or an unwritable DIR (before any row runs). A row whose file
 // cannot be analysed gets proof "none" with the error as its reason.
-ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const CancelToken* cancel,
-                                   const ProgressFn& progress);
+ExactAtlasResult build_exact_atlas(const ExactAtlasSettings& settings, const JobContext& job = {});
 
 }  // namespace tripack::jobs

@@ -206,7 +206,9 @@ double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettin
 }
 
 ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
-                      const CancelToken& cancel, const ProgressFn& progress) {
+                      const JobContext& job) {
+  const CancelToken never;
+  const CancelToken& cancel = job.cancel ? *job.cancel : never;
   const auto start = Clock::now();
   ExploreResult result;
   result.settings = settings;
@@ -216,14 +218,14 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   auto report = [&](const std::string& stage, const std::string& item, double cost_done = 0) {
     std::lock_guard<std::mutex> lock(report_lock);
     done += cost_done;
-    if (!progress) return;
+    if (!job.progress) return;
     Progress p;
     p.stage = stage;
     p.item = item;
     p.fraction = plan.cost > 0 ? std::min(1.0, done / plan.cost) : 1.0;
     p.elapsed = seconds_since(start);
     p.item_finished = cost_done > 0;
-    progress(p);
+    job.progress(p);
   };
 
   // Builds on the runner's threads, in catalogue order in the result.
@@ -275,11 +277,10 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       // Random starts only: at n <= 60 they reach the best (19 of 19 n = 16..34 at 100 steps),
       // where lattice starts led both chains of seed 1 to t34b.
       search.lattice_starts = false;
-      search.cancel = &cancel;
       const std::string item = fmt::format("n = {}, {} steps", n, settings.search_steps);
       report("search", item);
       try {
-        const search::SearchResult found = search::run_search(search);
+        const search::SearchResult found = search::run_search(search, {&cancel, {}, {}});
         for (const auto& x : found.packings)
           result.packings.push_back(packing_of_search(x, found.seconds));
         found_by_n.emplace_back(n, found.packings);
@@ -294,13 +295,12 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     search.runs = settings.large_runs;
     search.seed = settings.seed;
     search.threads = settings.threads;
-    search.cancel = &cancel;
     const double cost = search_cost(n, search.runs, settings.threads,
                                     search.scene.growth ? search.scene.growth->rate : 0.01);
     report("billiards", fmt::format("n = {}, {} runs", n, search.runs));
     const auto t0 = Clock::now();
     try {
-      const BilliardsSearchResult found = search_billiards(search);
+      const BilliardsSearchResult found = search_billiards(search, {&cancel, {}, {}});
       const double seconds = seconds_since(t0);
       for (std::size_t i = 0; i < found.packings.size(); ++i)
         result.packings.push_back(packing_of_search(found.packings[i], seconds));
@@ -319,10 +319,12 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     try {
       AccuracySettings accuracy;
       accuracy.seed = settings.seed;
-      result.accuracy = measure_accuracy(catalogue, accuracy, &cancel, [&](const Progress& p) {
+      const auto accuracy_progress = [&](const Progress& p) {
         report("accuracy", p.item, p.item_finished ? kAccuracyCost / std::max(1LL, p.total) : 0);
-      });
-      if (!result.accuracy->interrupted) result.stages_done.push_back("accuracy");
+      };
+      result.accuracy =
+          measure_accuracy(catalogue, accuracy, {&cancel, accuracy_progress, job.tool_version});
+      if (!result.accuracy->cancelled) result.stages_done.push_back("accuracy");
     } catch (const std::exception& e) {
       result.errors.push_back(std::string("accuracy: ") + e.what());
     }
@@ -340,7 +342,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
   for (auto& r : result.packings)
     r.proven_optimal = r.proven_optimal && r.pattern.packing.d >= best_d[r.n()] * (1 - 1e-12L);
   result.class_gaps = class_gaps_of(catalogue, result.packings);
-  result.interrupted = cancel.cancelled();
+  result.cancelled = cancel.cancelled();
   result.seconds = seconds_since(start);
   report("done", "");
   return result;

@@ -2,7 +2,7 @@
 // billiards searches for small n, class members and the matrix stress set, the two compared, and
 // the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
 // report directory. Every stage runs on the job runner (runner/runner.hpp) and stops between items
-// when `cancel` is set; the result says so.
+// when its job is cancelled; the result says so.
 #pragma once
 
 #include <optional>
@@ -94,7 +94,7 @@ struct ExploreResult {
   std::optional<AccuracyStudy> accuracy;
   std::vector<std::string> stages_done;
   std::vector<std::string> errors;  // one line each: an item that failed (the rest went on)
-  bool interrupted = false;
+  bool cancelled = false;
   double seconds = 0;
 };
 
@@ -105,6 +105,6 @@ double estimated_explore_seconds(const Catalogue& catalogue, const ExploreSettin
 // Progress: stage "build", "billiards", "accuracy" or "done", the item in words, and the fraction
 // of the whole exploration's estimated cost (Progress::fraction).
 ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& settings,
-                      const CancelToken& cancel, const ProgressFn& progress = {});
+                      const JobContext& job = {});
 
 }  // namespace tripack::jobs

@@ -21,7 +21,7 @@ namespace {
 
 // One file read, checked and analysed; `stored` is what goes into the database.
 ImportedPacking analyse_file(const ImportRequest& request, const std::string& path,
-                             store::StoredPacking& stored) {
+                             const std::string& tool_version, store::StoredPacking& stored) {
   const auto start = Clock::now();
   ImportedPacking out;
   out.file = path;
@@ -65,14 +65,14 @@ ImportedPacking analyse_file(const ImportRequest& request, const std::string& pa
   out.graph_hash = record.graph_hash;
   out.bonds = record.bonds();
   out.rattlers = record.pattern.rattlers;
-  stored = store::stored_of(record, request.tool_version);
+  stored = store::stored_of(record, tool_version);
   out.seconds = seconds_since(start);
   return out;
 }
 
 }  // namespace
 
-ImportResult import_packings(const ImportRequest& request) {
+ImportResult import_packings(const ImportRequest& request, const JobContext& job) {
   const auto start = Clock::now();
   if (request.files.empty()) throw ImportError("db import needs at least one file");
   ImportResult result;
@@ -91,14 +91,13 @@ ImportResult import_packings(const ImportRequest& request) {
   JobItems items;
   items.count = request.files.size();
   items.run = [&](std::size_t i) {
-    result.packings[i] = analyse_file(request, request.files[i], stored[i]);
+    result.packings[i] = analyse_file(request, request.files[i], job.tool_version, stored[i]);
     return std::string();
   };
   items.finished = [&](std::size_t i, const std::string&) {
-    const Progress p = counter.finished(request.files[i]);
-    if (request.progress) request.progress(p);
+    job.report(counter.finished(request.files[i]));
   };
-  if (ThreadExecutor(request.threads).run_items(items, request.cancel).cancelled) {
+  if (ThreadExecutor(request.threads).run_items(items, job.cancel).cancelled) {
     ImportResult cancelled;
     cancelled.db = request.db;
     cancelled.cancelled = true;

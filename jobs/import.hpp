@@ -34,11 +34,8 @@ struct ImportRequest {
   std::vector<std::string> files;
   std::string db = "tripack.db";         // created if missing
   std::optional<Convention> convention;  // none: as each file declares (analyze's rule)
-  std::string tool_version;
-  int threads = 2;                      // files analysed at once (the job runner's threads)
-  bool accept_header_d = false;         // store a file whose "# d:" differs from its points' d
-  const CancelToken* cancel = nullptr;  // stops before the store: nothing is stored
-  ProgressFn progress;                  // stage "import": one report per analysed file
+  int threads = 2;                       // files analysed at once (the job runner's threads)
+  bool accept_header_d = false;          // store a file whose "# d:" differs from its points' d
 
   void declare(OptionList& o) {
     o.option("FILE", files, "packing files (any layout of 'analyze')").required();
@@ -85,6 +82,8 @@ struct ImportResult {
 // rounding tolerance, an orientation that cannot be told), that has overlapping disks (see
 // kOverlapTolerance) or whose packing is not certified; store::StoreError for the database
 // (another schema version, not a database, locked). In every case nothing is stored.
-ImportResult import_packings(const ImportRequest& request);
+// Progress: stage "import", one report per analysed file. Cancelled: it stops before the store,
+// and nothing is stored.
+ImportResult import_packings(const ImportRequest& request, const JobContext& job = {});
 
 }  // namespace tripack::jobs

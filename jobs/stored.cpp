@@ -161,18 +161,18 @@ std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std:
 }
 
 RecordedSearch search_and_record(search::SearchRequest request, const std::string& db,
-                                 const std::string& tool_version) {
+                                 const JobContext& job) {
   std::optional<store::ResultsDb> store;
   if (!db.empty()) {
     store.emplace(store::ResultsDb::open(db));
     request.starts = stored_starts(*store, request.n, 3);
   }
   RecordedSearch recorded;
-  recorded.search = search::run_search(request);
+  recorded.search = search::run_search(request, job);
   const auto& result = recorded.search;
   if (store)
     for (std::size_t c = 0; c < result.chains.size(); ++c)
-      if (!store->record(run_record_of(result, c, tool_version)))
+      if (!store->record(run_record_of(result, c, job.tool_version)))
         recorded.notes.push_back(
             fmt::format("{} already holds n = {} seed = {} ({}); not recorded again", db, request.n,
                         result.chains[c].seed, search::search_method(result)));

@@ -115,7 +115,7 @@ struct RecordedSearch {
   std::vector<std::string> notes;
 };
 RecordedSearch search_and_record(search::SearchRequest request, const std::string& db,
-                                 const std::string& tool_version);
+                                 const JobContext& job);
 
 // The best `count` stored packings of n as search starts (largest d first).
 std::vector<Packing> stored_starts(const store::ResultsDb& db, long long n, std::size_t count);

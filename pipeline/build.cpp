@@ -64,16 +64,15 @@ double BuildResult::seconds() const {
 
 namespace {
 
-void tell_stage(const BuildSettings& settings, const char* stage) {
-  if (!settings.progress) return;
+void tell_stage(const JobContext& job, const char* stage) {
   Progress p;
   p.stage = stage;
-  settings.progress(p);
+  job.report(p);
 }
 
 // Construct, polish the builder's bonds, the exact check: what every candidate of build --n needs.
 BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& request,
-                             const BuildSettings& settings) {
+                             const BuildSettings& settings, const JobContext& job) {
   // Refused before any allocation: a member of a million disks took 7 to 19 GB
   // (docs/performance.md, "10^6 disks"), so a k far beyond that is one line, not an abort.
   const long long n = catalogue.n_of(catalogue.find(request.class_id), request.k, request.p);
@@ -83,15 +82,14 @@ BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& req
         request.class_id, request.k, request.p ? fmt::format(" p={}", request.p) : "", n,
         kMaxBuildDisks));
   BuildResult b;
-  tell_stage(settings, "construct");
+  tell_stage(job, "construct");
   b.pattern = timed(b.times.construct, [&] {
-    return build_pattern(
-        catalogue, request,
-        {settings.progress, settings.cancel, settings.exhaustive, settings.threads});
+    return build_pattern(catalogue, request,
+                         {job.progress, job.cancel, settings.exhaustive, settings.threads});
   });
-  throw_if_cancelled(settings.cancel);
+  throw_if_cancelled(job.cancel);
   if (settings.polish) {
-    tell_stage(settings, "polish of the builder's bonds");
+    tell_stage(job, "polish of the builder's bonds");
     b.polish = timed(b.polish_seconds, [&] {
       return polish_bond_system(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers);
     });
@@ -101,13 +99,14 @@ BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& req
           fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
                       static_cast<double>(b.polish.max_residual), b.polish.iterations));
   }
-  if (b.pattern.exact) tell_stage(settings, "exact check");
+  if (b.pattern.exact) tell_stage(job, "exact check");
   if (b.pattern.exact) b.exact = timed(b.times.exact, [&] { return exact_check(b.pattern); });
   return b;
 }
 
 // The rest with `settings`: certificate (or the multiprecision polish alone), counts, record.
-void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSettings& settings) {
+void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSettings& settings,
+                  const JobContext& job) {
   b.digits = settings.digits;
   // At any n: the LP-free certificate is near-linear (docs/performance.md: 10^6 disks), and a
   // member it declines is not handed to LPs above AnalysisOptions::lp_limit.
@@ -120,10 +119,10 @@ void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSetting
     options.reference_bonds = b.pattern.bonds;
     options.reference_rattlers = b.pattern.rattlers;
     // The analysis reports every stage and relax step: there it also stops when cancelled.
-    if (settings.progress || settings.cancel)
-      options.progress = [&settings](const Progress& p) {
-        throw_if_cancelled(settings.cancel);
-        if (settings.progress) settings.progress(p);
+    if (job.progress || job.cancel)
+      options.progress = [&job](const Progress& p) {
+        throw_if_cancelled(job.cancel);
+        job.report(p);
       };
     // A certificate that fails (CLP giving up on a relax step: 263's jogged-line winner) leaves
     // the built packing uncertified with the reason, rather than losing it.
@@ -133,7 +132,7 @@ void finish_build(const Catalogue& catalogue, BuildResult& b, const BuildSetting
       b.certify_error = e.what();
     }
   } else if (settings.digits > kLongDoubleDigits) {
-    tell_stage(settings, "multiprecision polish");
+    tell_stage(job, "multiprecision polish");
     b.multiprecision = timed(b.times.multiprecision, [&] {
       return polish_multiprecision(b.pattern.packing, b.pattern.bonds, b.pattern.rattlers,
                                    settings.digits);
@@ -158,13 +157,14 @@ bool denser_or_more_bonded(const Pattern& a, const Pattern& b) {
 }  // namespace
 
 BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
-                              const BuildSettings& settings) {
-  BuildResult b = construct_member(catalogue, request, settings);
-  finish_build(catalogue, b, settings);
+                              const BuildSettings& settings, const JobContext& job) {
+  BuildResult b = construct_member(catalogue, request, settings, job);
+  finish_build(catalogue, b, settings, job);
   return b;
 }
 
-BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings) {
+BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings,
+                           const JobContext& job) {
   const auto members = catalogue.classify(n);
   if (members.empty())
     throw std::runtime_error("no class of the catalogue contains n = " + std::to_string(n));
@@ -182,10 +182,10 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
     std::stable_partition(variants.begin(), variants.end(),
                           [&](const std::string& v) { return v == first; });
     for (const auto& v : variants) {
-      throw_if_cancelled(settings.cancel);
+      throw_if_cancelled(job.cancel);
       BuildResult b;
       try {
-        b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings);
+        b = construct_member(catalogue, {m.cls->id, m.k, m.p, v}, settings, job);
       } catch (const std::runtime_error& e) {
         // A member whose construction fails (an inflated-segment base that does not round onto
         // its lattice) is no candidate; the others still are.
@@ -209,8 +209,8 @@ BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildS
                    [](const Packing& a, const Packing& b) { return a.d > b.d; });
   if (others.size() > 3) others.resize(3);
   result.runners_up = std::move(others);
-  throw_if_cancelled(settings.cancel);
-  finish_build(catalogue, *best, settings);
+  throw_if_cancelled(job.cancel);
+  finish_build(catalogue, *best, settings, job);
   result.best = std::move(*best);
   return result;
 }

@@ -17,13 +17,9 @@
 namespace tripack::pipeline {
 
 struct BuildSettings {
-  int digits = 15;      // > kLongDoubleDigits: MPFR polish to this many digits
-  bool polish = true;   // Newton on the builder's bond system
-  bool certify = true;  // relax, bonds, rigidity, stress from the geometry (needs the polish)
-  ProgressFn progress;  // stage starts (construct, polish, exact check, the analysis')
-  // Set: the build stops at its next check (between a construction's relaxes, between build
-  // --n's candidates and stages) by throwing Cancelled; nothing is built.
-  const CancelToken* cancel = nullptr;
+  int digits = 15;          // > kLongDoubleDigits: MPFR polish to this many digits
+  bool polish = true;       // Newton on the builder's bond system
+  bool certify = true;      // relax, bonds, rigidity, stress from the geometry (needs the polish)
   bool exhaustive = false;  // enumerating builders relax every candidate (BuildControl)
   int threads = 2;          // an enumeration's candidates relaxed at once (BuildControl)
 
@@ -76,8 +72,11 @@ struct BuildResult {
   double seconds() const;  // every stage
 };
 
+// A build is one item: progress reports each stage's start (construct, polish, exact check, the
+// analysis'); cancelled, it stops at its next check (between a construction's relaxes, between
+// build --n's candidates and stages) by throwing Cancelled, and nothing is built.
 BuildResult build_and_certify(const Catalogue& catalogue, const BuildRequest& request,
-                              const BuildSettings& settings);
+                              const BuildSettings& settings, const JobContext& job = {});
 
 // A candidate of `build --n`: a catalogue member containing n, built and polished.
 struct BuildCandidate {
@@ -95,7 +94,8 @@ struct BestBuild {
 };
 // Builds every member of the catalogue containing n without certificates, then the one with the
 // largest d with `settings`. Throws std::runtime_error when no class contains n.
-BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings);
+BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings,
+                           const JobContext& job = {});
 
 std::string member_name(const Provenance& member);  // "matrix k=2 p=7 variant=..."
 // The same in a file name: "matrix-k2-p7-..." (docs/conventions.md, "Names").

@@ -74,7 +74,7 @@ FormulaCheck check_formula(const Catalogue& catalogue, const std::string& class_
 }
 
 CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
-                               const std::function<void(const TableRow&)>& on_row) {
+                               const std::function<void(const CatalogueTableRow&)>& on_row) {
   const auto start = Clock::now();
   CatalogueTable table;
   for (const auto& c : catalogue.classes()) {
@@ -85,7 +85,7 @@ CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
         for (const auto& v : variants_or_default(catalogue, c, k)) {
           const auto t0 = Clock::now();
           const BuildResult b = build_and_certify(catalogue, {c.id, k, p, v}, BuildSettings{});
-          TableRow row;
+          CatalogueTableRow row;
           row.member = b.pattern.provenance;
           row.n = static_cast<long long>(b.pattern.packing.size());
           row.d = b.pattern.packing.d;

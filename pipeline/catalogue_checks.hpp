@@ -47,7 +47,7 @@ FormulaCheck check_formula(const Catalogue& catalogue, const std::string& class_
                            long k_last, long p,
                            const std::function<void(const FormulaCheckRow&)>& on_row = {});
 
-struct TableRow {
+struct CatalogueTableRow {
   Provenance member;
   long long n = 0;
   long double d = 0;
@@ -60,13 +60,13 @@ struct TableRow {
   double seconds = 0;
 };
 struct CatalogueTable {
-  std::vector<TableRow> rows;
+  std::vector<CatalogueTableRow> rows;
   bool all_ok = true;
   double seconds = 0;
 };
 // k = k_min .. k_min + k_count - 1 of every class (p = p_min .. p_min + 2 for the matrix).
 CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
-                               const std::function<void(const TableRow&)>& on_row = {});
+                               const std::function<void(const CatalogueTableRow&)>& on_row = {});
 
 // Every (class, k, p, variant) of the catalogue with n <= max_n, in catalogue order.
 std::vector<BuildRequest> class_members_up_to(const Catalogue& catalogue, long long max_n);

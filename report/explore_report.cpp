@@ -76,7 +76,7 @@ std::string packings_json(const ExploreResult& result) {
          {"file", packing_file_name(r)}});
   }
   nlohmann::json j{{"packings", rows},
-                   {"interrupted", result.interrupted},
+                   {"cancelled", result.cancelled},
                    {"stages_done", result.stages_done},
                    {"errors", result.errors},
                    {"seconds", result.seconds}};
@@ -353,7 +353,7 @@ std::string html_page(const ExploreResult& result, bool diagrams, bool forces,
        ".grid{display:flex;flex-wrap:wrap;gap:8px}.grid figure{margin:0;width:220px;font-size:11px}"
        ".grid img{width:220px}\n</style></head><body>\n";
   h << "<h1>Dense packings of n equal disks in an equilateral triangle</h1>\n";
-  if (result.interrupted)
+  if (result.cancelled)
     h << "<p class=\"warn\" id=\"interrupted\">This exploration was interrupted: the report shows "
          "what finished (stages done: "
       << html_escape(fmt::format("{}", fmt::join(result.stages_done, ", "))) << ").</p>\n";

@@ -64,6 +64,22 @@ JobOutcome ThreadExecutor::run_items(const JobItems& items, const CancelToken* c
   return dispenser.close();
 }
 
+long long skip_done(JobItems& items, const std::function<std::string(std::size_t)>& key,
+                    const std::set<std::string>& done) {
+  std::vector<std::size_t> all;
+  if (items.order) {
+    all = *items.order;
+  } else {
+    for (std::size_t i = 0; i < items.count; ++i) all.push_back(i);
+  }
+  std::vector<std::size_t> pending;
+  for (std::size_t i : all)
+    if (!done.count(key(i))) pending.push_back(i);
+  const auto skipped = static_cast<long long>(all.size() - pending.size());
+  items.order = std::move(pending);
+  return skipped;
+}
+
 ProgressCounter::ProgressCounter(std::string stage, long long total)
     : stage_(std::move(stage)), total_(total) {}
 

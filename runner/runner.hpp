@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,13 @@ class ThreadExecutor final : public Executor {
  private:
   int threads_;
 };
+
+// Resume, the runner's one way (docs/architecture.md, "Long jobs"): a resumable job names each item
+// by a key, and `done` holds the keys of the items an earlier run finished, read from the store
+// (a campaign's runs) or from a formats/ table (the exact atlas's rows), never parsed by hand.
+// Leaves in items.order only the items still to run, in their order; returns how many it skipped.
+long long skip_done(JobItems& items, const std::function<std::string(std::size_t)>& key,
+                    const std::set<std::string>& done);
 
 // Elapsed seconds and the item count for a job's Progress reports (done() may be read from any
 // thread while finished() counts on the one that records).

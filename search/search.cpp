@@ -158,11 +158,12 @@ struct HeadStart {
 class Chain {
  public:
   Chain(const SearchRequest& request, std::uint64_t seed, Clock::time_point start,
-        const ProgressFn& progress, const HeadStart* head = nullptr)
+        const JobContext& job, const HeadStart* head = nullptr)
       : request_(request),
         rng_(seed),
         start_(start),
-        progress_(progress),
+        job_(job),
+        base_job_{job.cancel, {}, job.tool_version},
         head_(head),
         independent_(request.starts.empty() && !head) {
     summary_.seed = seed;
@@ -172,7 +173,7 @@ class Chain {
       base_request_.n = *base;
       base_request_.target.reset();
       base_request_.starts.clear();
-      base_ = std::make_unique<Chain>(base_request_, rng_(), start, no_progress_);
+      base_ = std::make_unique<Chain>(base_request_, rng_(), start, base_job_);
     }
   }
 
@@ -203,7 +204,7 @@ class Chain {
 
  private:
   bool done() const {
-    if (summary_.target_reached || cancelled(request_.cancel)) return true;
+    if (summary_.target_reached || job_.cancelled()) return true;
     if (request_.steps > 0 && summary_.steps >= request_.steps) return true;
     return seconds_since(start_) >= request_.seconds;
   }
@@ -540,7 +541,7 @@ class Chain {
       summary_.seconds_to_target = summary_.seconds_to_best;
       summary_.cpu_seconds_to_target = summary_.cpu_seconds_to_best;
     }
-    if (progress_) {
+    if (job_.progress) {
       Progress report;
       report.stage = "search";
       report.item =
@@ -548,7 +549,7 @@ class Chain {
       report.elapsed = summary_.seconds_to_best;
       report.fraction = std::min(1.0, report.elapsed / request_.seconds);
       report.d = d;
-      progress_(report);
+      job_.report(report);
     }
   }
 
@@ -556,7 +557,8 @@ class Chain {
   HoppingSettings settings_;
   std::mt19937_64 rng_;
   Clock::time_point start_;
-  const ProgressFn& progress_;
+  const JobContext& job_;
+  JobContext base_job_;  // the base chain's: stops with this one, reports nothing
   const HeadStart* head_;
   bool independent_;  // started from nothing stored or built
   double cpu_start_ = 0;
@@ -569,7 +571,6 @@ class Chain {
   SearchChain summary_;
   // The search of the base n when n is an inflation of it (else none).
   SearchRequest base_request_;
-  ProgressFn no_progress_;
   std::unique_ptr<Chain> base_;
   long long own_steps_ = 0, base_improved_at_ = 0;
   long double inflated_base_d_ = 0;
@@ -601,15 +602,16 @@ bool starts_from_builders(const SearchRequest& request) {
 }
 
 // `build --n N` on the request's threads, timed; no head start when no class contains n.
-HeadStart build_head_start(const SearchRequest& request, BuilderStart& summary) {
+HeadStart build_head_start(const SearchRequest& request, const JobContext& job,
+                           BuilderStart& summary) {
   HeadStart head;
   const auto start = Clock::now();
   const double cpu_start = process_cpu_seconds();
   try {
     pipeline::BuildSettings settings;
     settings.threads = request.threads;
-    settings.cancel = request.cancel;
-    pipeline::BestBuild built = pipeline::build_best_for_n(*request.builders, request.n, settings);
+    pipeline::BestBuild built =
+        pipeline::build_best_for_n(*request.builders, request.n, settings, {job.cancel, {}, {}});
     const PackingRecord& record = built.best.record;
     summary.member = pipeline::member_name(built.best.pattern.provenance);
     summary.d = record.d.str(kLongDoubleDigits);
@@ -638,19 +640,17 @@ std::string search_method(const SearchResult& result) {
   return method_of(result.request, result.builder && !result.builder->member.empty());
 }
 
-SearchResult run_search(const SearchRequest& request) {
+SearchResult run_search(const SearchRequest& request, const JobContext& job) {
   check(request);
   SearchResult result;
   result.request = request;
-  result.request.progress = {};
-  result.request.cancel = nullptr;
   result.request.builders = nullptr;
   const auto start = Clock::now();
-  const ProgressFn progress = serialised(request.progress);
+  const JobContext chains_job{job.cancel, serialised(job.progress), job.tool_version};
   std::optional<HeadStart> head;
   if (starts_from_builders(request)) {
     result.builder.emplace();
-    head = build_head_start(request, *result.builder);
+    head = build_head_start(request, job, *result.builder);
     if (head->starts.empty()) head.reset();
   }
   std::vector<SearchChain> chains(static_cast<std::size_t>(request.threads));
@@ -658,7 +658,7 @@ SearchResult run_search(const SearchRequest& request) {
   JobItems items;
   items.count = chains.size();
   items.run = [&](std::size_t c) {
-    Chain chain(request, request.seed + c, start, progress, head ? &*head : nullptr);
+    Chain chain(request, request.seed + c, start, chains_job, head ? &*head : nullptr);
     chain.run();
     chains[c] = chain.summary();
     found[c] = chain.records();
@@ -666,7 +666,7 @@ SearchResult run_search(const SearchRequest& request) {
   };
   items.finished = [](std::size_t, const std::string&) {};
   ThreadExecutor(request.threads).run_items(items, nullptr);
-  result.cancelled = cancelled(request.cancel);
+  result.cancelled = job.cancelled();
   result.chains = chains;
   // A chain meets one packing many times (a member walking a plateau, its final analysis): it
   // counts once per chain, so that a packing's runs are the chains that reached it.

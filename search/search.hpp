@@ -62,9 +62,6 @@ struct SearchRequest {
   // the atlas's independent confirmations).
   const Catalogue* builders = nullptr;
   bool builder_starts = true;  // the command's switch: whether it sets `builders`
-  // Stage "search": one report per step that changed the best, and one per finished chain.
-  ProgressFn progress;
-  const CancelToken* cancel = nullptr;  // set: the chains stop after their current step
 
   void declare(OptionList& o) {
     o.option("N", n, "number of disks").required().range(2, 100000);
@@ -139,6 +136,8 @@ std::string search_method(const SearchRequest& request);
 std::string search_method(const SearchResult& result);
 // Throws std::invalid_argument for n < 2, a budget that is not positive, threads < 1, or a start
 // that is not a packing of n disks.
-SearchResult run_search(const SearchRequest& request);
+// Progress: stage "search", one report per step that changed the best, and one per finished
+// chain. Cancelled: the chains stop after their current step.
+SearchResult run_search(const SearchRequest& request, const JobContext& job = {});
 
 }  // namespace tripack::search

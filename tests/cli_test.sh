@@ -247,6 +247,21 @@ else
   fail=$((fail + 1))
   echo "FAIL: many distinct packings: $total labels, $unique unique, $valid valid, json rc $rc"
 fi
+# build-scan resumes through the runner: a second range over the first builds only the new N,
+# and the table holds each N once, in order; a table of another format is refused, not appended.
+tmp=$(mktemp -d)
+"$TRIPACK" build-scan --n 10..12 --table "$tmp/scan.csv" >/dev/null 2>&1
+out=$("$TRIPACK" build-scan --n 8..14 --table "$tmp/scan.csv" --json 2>/dev/null)
+if grep -q '"already_done":3,"built_now":4,"certified_now":4' <<<"$out" &&
+  [ "$(cut -d, -f1 "$tmp/scan.csv" | tr '\n' ' ')" = "n 8 9 10 11 12 13 14 " ]; then
+  pass=$((pass + 1))
+else
+  fail=$((fail + 1))
+  echo "FAIL: build-scan resume: $out; $(cut -d, -f1 "$tmp/scan.csv" | tr '\n' ' ')"
+fi
+echo "a,b" >"$tmp/foreign.csv"
+expect_error "build-scan foreign table" "not a tripack build-scan table" build-scan --n 8..9 --table "$tmp/foreign.csv"
+rm -rf "$tmp"
 # compare: the builder's t22a and the best billiards packing are the same packing (GL1995 Fig.t22).
 expect_output "compare 22" "the same packing" compare 22 --runs 10 --threads 2
 expect_output "compare 22 csv" ",true,true," compare 22 --runs 10 --threads 2 --csv

@@ -34,6 +34,7 @@ declare -A ARGS=(
   [check-formula]="four-delta --k 1..3"
   [build]="four-delta --k 2"
   [analyze]="$tmp/t12.txt"
+  [build-scan]="--n 6..7 --table $tmp/scan.csv"
   [billiards]="7 --runs 2"
   [compare]="12 --runs 2"
   [search]="12 --steps 3 --seed 1"

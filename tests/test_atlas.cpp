@@ -83,7 +83,7 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   request.runs = 6;
   request.threads = 2;
   request.db = (dir / "runs.db").string();
-  jobs::run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  jobs::run_campaign(request, ThreadExecutor(request.threads), {});
   const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
   jobs::AtlasSettings settings;
   settings.n_first = 9;  // n = 9 has no run: its builder (Delta(4)-1) alone
@@ -91,7 +91,7 @@ TEST(Atlas, MergesTheDatabaseAndTheBuildersAndRoundTrips) {
   settings.ranked_first = 12;
   settings.ranked_last = 12;
   settings.ranked_count = 3;
-  const auto atlas = jobs::build_atlas(catalogue, request.db, settings, nullptr, {});
+  const auto atlas = jobs::build_atlas(catalogue, request.db, settings);
   EXPECT_TRUE(atlas.errors.empty());
   EXPECT_TRUE(atlas.missing.empty());
   std::map<long long, int> rows_of_n;

@@ -33,7 +33,7 @@ CampaignRequest small_campaign(long long first, long long last, int runs, const 
 
 TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
   CampaignRequest request = small_campaign(10, 13, 4, "agree.db");
-  const CampaignResult first = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  const CampaignResult first = run_campaign(request, ThreadExecutor(request.threads), {});
   EXPECT_EQ(first.units, 16);
   EXPECT_EQ(first.skipped, 0);
   EXPECT_EQ(first.recorded, 16);
@@ -51,7 +51,7 @@ TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
         << "n = " << best.n;
   }
   // Rerun: nothing to do, nothing counted twice.
-  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), {});
   EXPECT_EQ(again.skipped, 16);
   EXPECT_EQ(again.recorded, 0);
   EXPECT_EQ(store::ResultsDb::open(request.db).run_count(), 16);
@@ -64,13 +64,14 @@ TEST(Campaign, AnInterruptedCampaignResumesWithoutRepeats) {
   request.runs = 5;
   request.db = fresh_db("resume.db");
   CancelToken cancel;
+  const auto progress = [&](const Progress& p) {
+    if (p.done == 3) cancel.cancel();  // as Ctrl-C would, after the third unit
+  };
   const CampaignResult part =
-      run_campaign(request, ThreadExecutor(request.threads), &cancel, [&](const Progress& p) {
-        if (p.done == 3) cancel.cancel();  // as Ctrl-C would, after the third unit
-      });
+      run_campaign(request, ThreadExecutor(request.threads), {&cancel, progress, ""});
   EXPECT_TRUE(part.cancelled);
   EXPECT_EQ(part.recorded, 3);
-  const CampaignResult rest = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  const CampaignResult rest = run_campaign(request, ThreadExecutor(request.threads), {});
   EXPECT_EQ(rest.skipped, 3);
   EXPECT_EQ(rest.recorded, 7);
   const auto db = store::ResultsDb::open(request.db);
@@ -129,7 +130,7 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
   request.n_first = 0;
   request.n_last = 1;
   request.db = fresh_db("never.db");
-  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), nullptr, {}),
+  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), {}),
                std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(request.db));  // checked before the database is made
 }
@@ -138,7 +139,7 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
 // every run and the other n alone, and a rerun of the campaign still skips every unit.
 TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   CampaignRequest request = small_campaign(14, 17, 12, "prune.db");
-  run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  run_campaign(request, ThreadExecutor(request.threads), {});
   std::map<long long, std::vector<PackingRecord>> before;
   std::map<long long, std::vector<long long>> before_ids;
   {
@@ -166,7 +167,7 @@ TEST(Campaign, PruneKeepsTheBestKOfEachNAndEveryRun) {
   }
   EXPECT_EQ(pruned.removed, removed);
   EXPECT_EQ(db.statistics().integrity, "ok");
-  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  const CampaignResult again = run_campaign(request, ThreadExecutor(request.threads), {});
   EXPECT_EQ(again.skipped, 48);
   EXPECT_EQ(again.recorded, 0);
   EXPECT_THROW(prune_database(request.db, 0, 2, 100), std::invalid_argument);

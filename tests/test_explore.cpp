@@ -38,8 +38,7 @@ const jobs::ExploreResult& small_exploration() {
     s.large_terms.clear();
     s.search_steps = 6;
     s.accuracy = false;  // tests/test_accuracy.cpp covers it
-    const CancelToken cancel;
-    return jobs::explore(catalogue(), s, cancel);
+    return jobs::explore(catalogue(), s);
   }();
   return result;
 }
@@ -143,10 +142,11 @@ TEST(Explore, ACancelledExplorationSaysSoAndKeepsWhatFinished) {
   s.threads = 1;  // one item at a time: none is under way when the token is set
   CancelToken cancel;
   int finished = 0;
-  const auto result = jobs::explore(catalogue(), s, cancel, [&](const Progress& p) {
+  const auto progress = [&](const Progress& p) {
     if (p.item_finished && ++finished == 5) cancel.cancel();  // as Ctrl-C would, during the builds
-  });
-  EXPECT_TRUE(result.interrupted);
+  };
+  const auto result = jobs::explore(catalogue(), s, {&cancel, progress, ""});
+  EXPECT_TRUE(result.cancelled);
   EXPECT_TRUE(result.stages_done.empty());
   // The token is read between items: the fifth build had finished when it was set, and nothing
   // after it starts.

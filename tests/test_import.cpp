@@ -62,8 +62,7 @@ ImportResult import_files(const std::vector<std::string>& files, const std::stri
   ImportRequest request;
   request.files = files;
   request.db = db;
-  request.tool_version = "test";
-  return import_packings(request);
+  return import_packings(request, {nullptr, {}, "test"});
 }
 
 // Every row of both tables in a fixed order, as one string: equal strings, equal databases.
@@ -99,7 +98,7 @@ std::string campaign_db(const std::string& name) {
   request.runs = 4;
   request.threads = 2;
   request.db = fresh_db(name);
-  run_campaign(request, ThreadExecutor(request.threads), nullptr, {});
+  run_campaign(request, ThreadExecutor(request.threads), {});
   return request.db;
 }
 

@@ -53,12 +53,12 @@ struct View<jobs::AtlasResult> {
            {"builders", builders},
            {"missing", a.missing},
            {"errors", a.errors},
-           {"interrupted", a.interrupted},
+           {"cancelled", a.cancelled},
            {"seconds", a.seconds}};
     return {j,
             "rows",
             {"n_first", "n_last", "db", "digits", "rows", "builders", "missing", "errors",
-             "interrupted", "seconds"}};
+             "cancelled", "seconds"}};
   }
 
   static void text(std::ostream& out, const jobs::AtlasResult& a) {
@@ -80,7 +80,7 @@ struct View<jobs::AtlasResult> {
         "atlas {}..{} from {}: {} rows, {} builders, {} without a packing, {} "
         "errors{}; {:.1f} s\n",
         a.settings.n_first, a.settings.n_last, a.db, a.rows.size(), a.builders.size(),
-        a.missing.size(), a.errors.size(), a.interrupted ? " (interrupted)" : "", a.seconds);
+        a.missing.size(), a.errors.size(), a.cancelled ? " (interrupted)" : "", a.seconds);
   }
 };
 
