@@ -9,7 +9,7 @@
 
 #include "commands/common.hpp"
 #include "formats/formats.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "jobs/compare.hpp"
 #include "jobs/stored.hpp"
 #include "report/results/billiards.hpp"
@@ -23,16 +23,16 @@ namespace {
 struct BilliardsRuns {
   long long n = 0;    // 0: the scene's n
   std::string scene;  // YAML file; empty: the built-in scene
-  jobs::BilliardsSearch search;
+  jobs::BilliardsRunsRequest request;
 
   void declare(OptionList& o) {
     o.option("N", n, "number of disks (or give --scene)").range(1, 1e7);
-    search.declare(o);
+    request.declare(o);
     o.option("--scene", scene, "scene YAML (container, n, initial state, effects)");
   }
   void prepare(const Context& c) {
-    search.scene = scene.empty() ? default_scene(static_cast<int>(n)) : load_scene(scene);
-    jobs::prepare_scene(load_catalogue(c), search.scene, n);
+    request.scene = scene.empty() ? default_scene(static_cast<int>(n)) : load_scene(scene);
+    jobs::prepare_scene(load_catalogue(c), request.scene, n);
   }
 };
 
@@ -51,7 +51,7 @@ class Billiards : public Command {
  public:
   void declare(OptionList& o) override {
     runs.declare(o);
-    o.flag("!--no-certify", runs.search.certify,
+    o.flag("!--no-certify", runs.request.certify,
            "skip relax/bonds/rigidity/stress of the end states");
     o.option("-o,--output", output_dir,
              "directory: one coordinate file per distinct packing, named by its label");
@@ -62,13 +62,13 @@ class Billiards : public Command {
   int run(const Context& c) override {
     if (runs.n == 0 && runs.scene.empty())
       throw std::invalid_argument("billiards needs N or --scene FILE");
-    // -o DIR is checked before the runs (a search must not end in an unwritable directory).
+    // -o DIR is checked before the runs (the runs must not end in an unwritable directory).
     const PackingFormat& format = format_named(file_format, "--format");
     const auto dir = output_dir.empty() ? std::filesystem::path() : writable_directory(output_dir);
     runs.prepare(c);
     report::ProgressLine progress(
-        std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
-    const auto result = jobs::search_billiards(runs.search, job_context(c, progress.callback()));
+        std::cerr, terminal_line(fmt::format("billiards n={}", runs.request.scene.n), out));
+    const auto result = jobs::billiards_runs(runs.request, job_context(c, progress.callback()));
     progress.finish();
     // Files first: what was found is kept even if printing fails.
     if (!dir.empty())
@@ -97,8 +97,8 @@ class Compare : public RequestCommand<BilliardsRuns, true> {
     const Catalogue catalogue = load_catalogue(c);
     runs.prepare(c);
     report::ProgressLine progress(
-        std::cerr, terminal_line(fmt::format("billiards n={}", runs.search.scene.n), out));
-    const auto result = jobs::compare_constructed(catalogue, runs.n, runs.search, {},
+        std::cerr, terminal_line(fmt::format("billiards n={}", runs.request.scene.n), out));
+    const auto result = jobs::compare_constructed(catalogue, runs.n, runs.request, {},
                                                   job_context(c, progress.callback()));
     progress.finish();
     print_result(result, out);

@@ -1,5 +1,5 @@
 // Ranking and labels, defined once (docs/conventions.md, "Labels"): the packings of one n ordered
-// by decreasing d and named like the paper (t22a, t22b, ...). The billiards search, the store's
+// by decreasing d and named like the paper (t22a, t22b, ...). The billiards runs, the store's
 // read commands, the atlas and the explorer all rank through rank_records.
 #pragma once
 

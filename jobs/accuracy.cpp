@@ -19,7 +19,7 @@
 #include "core/points.hpp"
 #include "core/timing.hpp"
 #include "formats/formats.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "polish/polish_mp.hpp"
@@ -403,7 +403,7 @@ std::string gap_groups(const pipeline::Analysis& a) {
 }
 
 // The two packings of 33 disks 8.5e-9 apart in d (78 bonds; 74 bonds and a tight-caged rattler):
-// each stable, told apart, and ranked alike by billiards searches over different seeds and
+// each stable, told apart, and ranked alike by billiards runs over different seeds and
 // thread counts. The seeds were found with growth rate 0.01 (the default then), pinned here so a
 // change of the default scene does not move these trajectories.
 HardCase close_pair_case(const std::string& dir,
@@ -427,13 +427,13 @@ HardCase close_pair_case(const std::string& dir,
   std::string found;
   for (const auto& s : searches) {
     if (progress) progress(fmt::format("hard cases: n = 33 search from seed {}", s.seed));
-    BilliardsSearch search;
-    search.scene = default_scene(33);
-    search.scene.growth->rate = 0.01;
-    search.runs = s.runs;
-    search.seed = s.seed;
-    search.threads = s.threads;
-    const auto result = search_billiards(search);
+    BilliardsRunsRequest runs;
+    runs.scene = default_scene(33);
+    runs.scene.growth->rate = 0.01;
+    runs.runs = s.runs;
+    runs.seed = s.seed;
+    runs.threads = s.threads;
+    const auto result = billiards_runs(runs);
     std::optional<std::size_t> rank_a, rank_b;
     for (std::size_t r = 0; r < result.packings.size(); ++r) {
       if (compare_packings(result.packings[r].pattern, a).same) rank_a = r;

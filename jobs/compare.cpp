@@ -5,7 +5,7 @@
 namespace tripack::jobs {
 
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search,
+                                           BilliardsRunsRequest runs,
                                            const pipeline::BuildSettings& settings,
                                            const JobContext& job) {
   const auto start = Clock::now();
@@ -14,9 +14,9 @@ ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long
   if (!catalogue.classify(n).empty())
     result.constructed =
         pipeline::build_best_for_n(catalogue, n, settings, {job.cancel, {}, job.tool_version});
-  if (search.scene.n == 0) search.scene = default_scene(static_cast<int>(n));
-  prepare_scene(catalogue, search.scene, n);
-  result.billiards = search_billiards(search, job);
+  if (runs.scene.n == 0) runs.scene = default_scene(static_cast<int>(n));
+  prepare_scene(catalogue, runs.scene, n);
+  result.billiards = billiards_runs(runs, job);
   if (result.both()) {
     const pipeline::BuildResult& best = result.constructed->best;
     const Pattern& built = best.analysis ? best.analysis->pattern : best.pattern;

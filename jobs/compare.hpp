@@ -1,12 +1,12 @@
 // Constructed vs billiards for one n (docs/certified.md step 6): the catalogue's best builder
-// against the best packing a billiards search finds: d difference, bonds, rattlers, and whether the
+// against the best packing billiards runs find: d difference, bonds, rattlers, and whether the
 // contact graphs agree up to the triangle's 6 symmetries.
 #pragma once
 
 #include <optional>
 
 #include "analysis/compare.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "pipeline/build.hpp"
 
 namespace tripack::jobs {
@@ -14,7 +14,7 @@ namespace tripack::jobs {
 struct ConstructedVsBilliards {
   long long n = 0;
   std::optional<pipeline::BestBuild> constructed;  // none: no class of the catalogue contains n
-  BilliardsSearchResult billiards;
+  BilliardsRunsResult billiards;
   // Against the best (first-ranked) billiards packing, when both exist:
   std::optional<Comparison> comparison;
   long double d_relative_difference = 0;  // (d_billiards - d_constructed) / d_constructed
@@ -22,9 +22,9 @@ struct ConstructedVsBilliards {
   bool both() const { return constructed && !billiards.packings.empty(); }
 };
 
-// `search.scene` may be left empty: the default scene for n is used then.
+// `runs.scene` may be left empty: the default scene for n is used then.
 ConstructedVsBilliards compare_constructed(const Catalogue& catalogue, long long n,
-                                           BilliardsSearch search,
+                                           BilliardsRunsRequest runs,
                                            const pipeline::BuildSettings& settings,
                                            const JobContext& job = {});
 

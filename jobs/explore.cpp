@@ -26,7 +26,7 @@ namespace {
 double build_cost(long long n) {
   return 2.3e-5 * std::pow(static_cast<double>(n), 1.5);
 }
-double search_cost(long long n, int runs, int threads, double rate) {
+double billiards_cost(long long n, int runs, int threads, double rate) {
   const double per_run = 1.5e-3 * static_cast<double>(n) * std::pow(0.01 / rate, 0.75);
   return per_run * runs / std::max(1, threads);
 }
@@ -78,7 +78,7 @@ Plan plan_for(const Catalogue& catalogue, const ExploreSettings& s) {
     const Scene scene = default_scene(static_cast<int>(n));
     const double rate = scene.growth ? scene.growth->rate : 0.01;
     plan.cost += n > s.billiards_max_n && n > s.class_billiards_max_n
-                     ? search_cost(n, s.large_runs, s.threads, rate)
+                     ? billiards_cost(n, s.large_runs, s.threads, rate)
                      : hopping_cost(n, s.search_steps);
   }
   return plan;
@@ -290,17 +290,17 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
       report("search", item, hopping_cost(n, settings.search_steps));
       continue;
     }
-    BilliardsSearch search;
-    search.scene = default_scene(static_cast<int>(n));
-    search.runs = settings.large_runs;
-    search.seed = settings.seed;
-    search.threads = settings.threads;
-    const double cost = search_cost(n, search.runs, settings.threads,
-                                    search.scene.growth ? search.scene.growth->rate : 0.01);
-    report("billiards", fmt::format("n = {}, {} runs", n, search.runs));
+    BilliardsRunsRequest runs;
+    runs.scene = default_scene(static_cast<int>(n));
+    runs.runs = settings.large_runs;
+    runs.seed = settings.seed;
+    runs.threads = settings.threads;
+    const double cost = billiards_cost(n, runs.runs, settings.threads,
+                                       runs.scene.growth ? runs.scene.growth->rate : 0.01);
+    report("billiards", fmt::format("n = {}, {} runs", n, runs.runs));
     const auto t0 = Clock::now();
     try {
-      const BilliardsSearchResult found = search_billiards(search, {&cancel, {}, {}});
+      const BilliardsRunsResult found = billiards_runs(runs, {&cancel, {}, {}});
       const double seconds = seconds_since(t0);
       for (std::size_t i = 0; i < found.packings.size(); ++i)
         result.packings.push_back(packing_of_search(found.packings[i], seconds));
@@ -308,7 +308,7 @@ ExploreResult explore(const Catalogue& catalogue, const ExploreSettings& setting
     } catch (const std::exception& e) {
       result.errors.push_back(fmt::format("billiards n = {}: {}", n, e.what()));
     }
-    report("billiards", fmt::format("n = {}, {} runs", n, search.runs), cost);
+    report("billiards", fmt::format("n = {}, {} runs", n, runs.runs), cost);
   }
   if (!cancel.cancelled()) result.stages_done.push_back("billiards");
   if (!found_by_n.empty()) {

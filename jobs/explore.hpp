@@ -1,5 +1,5 @@
 // The explorer (`tripack explore`): every class member up to max_n built and certified,
-// billiards searches for small n, class members and the matrix stress set, the two compared, and
+// billiards runs for small n, class members and the matrix stress set, the two compared, and
 // the class gaps L(n(k)+1) - L(n(k)). Returns the data; report/explore_report.hpp writes the
 // report directory. Every stage runs on the job runner (runner/runner.hpp) and stops between items
 // when its job is cancelled; the result says so.
@@ -13,7 +13,7 @@
 #include "core/progress.hpp"
 #include "core/record.hpp"
 #include "jobs/accuracy.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "jobs/compare.hpp"
 #include "pipeline/build.hpp"
 

@@ -1,5 +1,5 @@
 // The results database read the way the rest of tripack ranks packings: the stored
-// packings of n in the billiards search's order, labelled tNa, tNb, ... by
+// packings of n in the billiards runs' order, labelled tNa, tNb, ... by
 // pipeline::label_order / paper_labels, and the results of `tripack db best`, `db check` and
 // `db export` (rendered by report/results/database.hpp). Read commands never create a database.
 #pragma once

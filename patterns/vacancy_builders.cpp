@@ -13,8 +13,8 @@ namespace tripack::patterns {
 namespace {
 
 // The enumeration's settings with the call's progress and cancel token.
-SegmentSearch segment_search(const BuilderCall& c) {
-  SegmentSearch search;
+SegmentEnumeration segment_enumeration(const BuilderCall& c) {
+  SegmentEnumeration search;
   if (c.control) {
     search.progress = c.control->progress;
     search.cancel = c.control->cancel;
@@ -26,7 +26,7 @@ SegmentSearch segment_search(const BuilderCall& c) {
 
 // Delta(rows) minus the best straight segment of `vacancies` sites.
 Pattern build_vacancy_segment(const BuilderCall& c) {
-  return best_vacancy_segment(c.arg("rows"), c.arg("vacancies"), segment_search(c)).pattern;
+  return best_vacancy_segment(c.arg("rows"), c.arg("vacancies"), segment_enumeration(c)).pattern;
 }
 
 // The Delta(2)-inflation of that packing: Delta(2 rows - 1) - (2 vacancies - 1) disks, side
@@ -37,7 +37,7 @@ Pattern build_vacancy_segment(const BuilderCall& c) {
 Pattern build_inflated_segment(const BuilderCall& c) {
   const long rows = c.arg("rows");
   const long vacancies = c.arg("vacancies");
-  const SegmentChoice base = best_vacancy_segment(rows, vacancies, segment_search(c));
+  const SegmentChoice base = best_vacancy_segment(rows, vacancies, segment_enumeration(c));
   // A long slip can also round some disks onto the neighbouring site, which changes the vacancy
   // set and the inflated n (k = 2, p = 20: 913 disks instead of 907); the lattice then too.
   const std::size_t expected =
@@ -50,13 +50,13 @@ Pattern build_inflated_segment(const BuilderCall& c) {
   // As the enumeration relaxes (patterns/vacancy_lattice.hpp): exhaustively up to 300 disks.
   const bool exhaustive =
       (c.control && c.control->exhaustive) ||
-      static_cast<long>(inflated->size()) <= segment_search(c).all_segments_up_to;
+      static_cast<long>(inflated->size()) <= segment_enumeration(c).all_segments_up_to;
   return relax_to_pattern(*inflated, exhaustive);
 }
 
 // Delta(rows) minus the best jogged line `line` lines from a wall.
 Pattern build_jogged_line(const BuilderCall& c) {
-  return best_jogged_line(c.arg("rows"), c.arg("line"), segment_search(c)).pattern;
+  return best_jogged_line(c.arg("rows"), c.arg("line"), segment_enumeration(c)).pattern;
 }
 
 const BuilderRegistration kVacancySegment{"vacancy-segment", build_vacancy_segment};

@@ -234,7 +234,7 @@ std::vector<std::vector<Site>> jogged_lines(long rows, long distance) {
   return out;
 }
 
-SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search) {
+SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentEnumeration& search) {
   if (vacancies < 1 || vacancies >= rows)
     throw std::invalid_argument("a vacancy segment of " + std::to_string(vacancies) +
                                 " sites does not fit a lattice line of " + std::to_string(rows) +
@@ -242,7 +242,7 @@ SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearc
   return best_vacancy_set(rows, straight_segments(rows, vacancies), search);
 }
 
-SegmentChoice best_jogged_line(long rows, long distance, const SegmentSearch& search) {
+SegmentChoice best_jogged_line(long rows, long distance, const SegmentEnumeration& search) {
   if (distance < 1 || rows - distance < 2)
     throw std::invalid_argument("no lattice line of 2 or more sites lies " +
                                 std::to_string(distance) + " lines from a wall of the " +
@@ -251,7 +251,7 @@ SegmentChoice best_jogged_line(long rows, long distance, const SegmentSearch& se
 }
 
 SegmentChoice best_vacancy_set(long rows, std::vector<std::vector<Site>> segments,
-                               const SegmentSearch& search) {
+                               const SegmentEnumeration& search) {
   if (segments.empty()) throw std::invalid_argument("no vacancy set to relax");
   const long vacancies = static_cast<long>(segments.front().size());
   const long n = triangular(rows) - vacancies;

@@ -60,7 +60,7 @@ Pattern relax_to_pattern(const Packing& start, bool exhaustive = false);
 // `exhaustive` relaxes every candidate by interior + LP as it stands (the check of the fast
 // ranking: docs/classes.md §9, docs/performance.md "build --n"). Both use `threads` threads; the
 // result does not depend on their number.
-struct SegmentSearch {
+struct SegmentEnumeration {
   std::size_t top_segments = 3;
   int restarts = 8;
   long double jitter = 1e-4L;    // in lattice spacings (see jittered() in the .cpp)
@@ -95,12 +95,13 @@ struct SegmentChoice {
   std::size_t segments = 0;     // how many were relaxed from the exact lattice
   std::size_t restarts = 0;     // how many jittered restarts were relaxed
 };
-SegmentChoice best_vacancy_segment(long rows, long vacancies, const SegmentSearch& search = {});
+SegmentChoice best_vacancy_segment(long rows, long vacancies,
+                                   const SegmentEnumeration& search = {});
 
 // The same enumeration over any list of vacancy sets of one size (relaxed in the list's order;
 // the densest of its ranking wins, as above). Throws std::invalid_argument on an empty list.
 SegmentChoice best_vacancy_set(long rows, std::vector<std::vector<Site>> sets,
-                               const SegmentSearch& search = {});
+                               const SegmentEnumeration& search = {});
 
 // Jogged lines: the whole lattice line `distance` lines from a wall (rows - distance sites,
 // from wall to wall), with one of its sites moved to a neighbouring site off the line, one set
@@ -109,6 +110,6 @@ SegmentChoice best_vacancy_set(long rows, std::vector<std::vector<Site>> sets,
 // such a set (docs/findings.md §11): the `distance` lines between the wall and the vacancies hold
 // `distance` more disks than Delta(rows - 1) fits there, squeezed.
 std::vector<std::vector<Site>> jogged_lines(long rows, long distance);
-SegmentChoice best_jogged_line(long rows, long distance, const SegmentSearch& search = {});
+SegmentChoice best_jogged_line(long rows, long distance, const SegmentEnumeration& search = {});
 
 }  // namespace tripack::patterns

@@ -1,7 +1,7 @@
 // The one way a long job runs its items: a cancellable pool that hands out item indices one at a
 // time to workers and gives every finished item back to the job on one thread at a time. Where
 // the workers are is the executor's business: threads of this process (ThreadExecutor) or other
-// MPI ranks plus threads of rank 0 (RankExecutor, runner/ranks.hpp). The billiards search, a
+// MPI ranks plus threads of rank 0 (RankExecutor, runner/ranks.hpp). The billiards runs, a
 // campaign, the atlas, the explorer, the accuracy study and an import all run through it.
 #pragma once
 

@@ -32,9 +32,9 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 jobs=${SAN_JOBS:-2}
 export CXX=${SAN_CXX:-g++} CC=${SAN_CC:-gcc}
 
-# The threaded tests: BilliardsSearch (1 vs 2 threads), Campaign (2 threads), Explore (the
+# The threaded tests: BilliardsRunsRequest (1 vs 2 threads), Campaign (2 threads), Explore (the
 # explorer's searches default to 2 threads), Accuracy.HardCases (2-thread n = 33 searches).
-tsan_filter=${TSAN_FILTER:-"BilliardsSearch.*:Campaign.*:Explore.*:Accuracy.HardCases*"}
+tsan_filter=${TSAN_FILTER:-"BilliardsRunsRequest.*:Campaign.*:Explore.*:Accuracy.HardCases*"}
 
 # configure_and_build DIR "SANITIZER FLAGS"
 configure_and_build() {

@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "jobs/campaign.hpp"
 #include "jobs/stored.hpp"
 #include "jobs/work_unit.hpp"
@@ -41,11 +41,11 @@ TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
   ASSERT_EQ(first.best.size(), 4u);
   // The same seeds through `tripack billiards`' search: the same best d for every n.
   for (const auto& best : first.best) {
-    jobs::BilliardsSearch search;
-    search.scene = default_scene(static_cast<int>(best.n));
-    search.runs = 4;
-    search.seed = 1;
-    const auto found = jobs::search_billiards(search);
+    jobs::BilliardsRunsRequest runs;
+    runs.scene = default_scene(static_cast<int>(best.n));
+    runs.runs = 4;
+    runs.seed = 1;
+    const auto found = jobs::billiards_runs(runs);
     ASSERT_FALSE(found.packings.empty());
     EXPECT_LT(std::fabs(std::stold(best.d) / found.packings.front().pattern.packing.d - 1), 1e-12L)
         << "n = " << best.n;
@@ -130,8 +130,7 @@ TEST(Campaign, RefusesARangeWithoutValidN) {
   request.n_first = 0;
   request.n_last = 1;
   request.db = fresh_db("never.db");
-  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), {}),
-               std::invalid_argument);
+  EXPECT_THROW(run_campaign(request, ThreadExecutor(request.threads), {}), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(request.db));  // checked before the database is made
 }
 

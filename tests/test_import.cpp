@@ -351,7 +351,7 @@ TEST(Import, ExportSelectsByRankAndRefusesWhatIsNotThere) {
   const std::string missing = fresh_db("missing.db");
   EXPECT_THROW(select_packings(missing, 12, 1, false), store::StoreError);
   EXPECT_FALSE(fs::exists(missing));
-  // The labels are the billiards search's: the best of n is tNa; check sees no duplicates.
+  // The labels are the billiards runs': the best of n is tNa; check sees no duplicates.
   const auto table = best_table(db, 10, 12);
   ASSERT_EQ(table.rows.size(), 3u);
   for (const auto& r : table.rows) EXPECT_EQ(r.label, "t" + std::to_string(r.n()) + "a");

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/described.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "report/render.hpp"
 #include "report/results/billiards.hpp"
@@ -133,7 +133,7 @@ TEST(Output, SearchTextColumnsAlignToTheWidestCell) {
 }
 
 TEST(Output, BilliardsTextColumnsAlignToTheWidestCell) {
-  jobs::BilliardsSearchResult r;
+  jobs::BilliardsRunsResult r;
   r.runs_asked = 0;
   r.packings = packings_of_many_widths();
   std::ostringstream text;

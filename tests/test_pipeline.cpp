@@ -14,7 +14,7 @@
 #include "core/io.hpp"
 #include "core/points.hpp"
 #include "core/ranking.hpp"
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "pipeline/analyze.hpp"
 #include "pipeline/build.hpp"
 #include "sim/billiards.hpp"
@@ -466,15 +466,15 @@ TEST(Labels, ConfirmationsCountEveryPackingOfTheSameValue) {
   EXPECT_EQ(records[2].confirmations(), 4);
 }
 
-TEST(BilliardsSearch, RankingDoesNotDependOnThreads) {
+TEST(BilliardsRuns, RankingDoesNotDependOnThreads) {
   // Run r uses seed + r whatever thread runs it, and ties are broken by bonds then seed: one and
   // two threads give the same labels, d and counts (n = 22: t22a d = 0.179396908611866, GL1995).
-  jobs::BilliardsSearch search;
-  search.scene = default_scene(22);
-  search.runs = 12;
-  const auto one = jobs::search_billiards(search);
-  search.threads = 2;
-  const auto two = jobs::search_billiards(search);
+  jobs::BilliardsRunsRequest runs;
+  runs.scene = default_scene(22);
+  runs.runs = 12;
+  const auto one = jobs::billiards_runs(runs);
+  runs.threads = 2;
+  const auto two = jobs::billiards_runs(runs);
   ASSERT_EQ(one.packings.size(), two.packings.size());
   for (std::size_t i = 0; i < one.packings.size(); ++i) {
     EXPECT_EQ(one.packings[i].label, two.packings[i].label);

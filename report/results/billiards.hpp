@@ -3,7 +3,7 @@
 
 #include <fmt/ranges.h>
 
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "jobs/compare.hpp"
 #include "report/results/build.hpp"
 
@@ -11,7 +11,7 @@ namespace tripack::report::results {
 
 using namespace jobs;
 
-inline Tree billiards_tree(const BilliardsSearchResult& r, const DescribeOptions& o) {
+inline Tree billiards_tree(const BilliardsRunsResult& r, const DescribeOptions& o) {
   Tree j;
   j["n"] = r.scene.n;
   j["runs_asked"] = r.runs_asked;
@@ -54,7 +54,7 @@ inline Tree billiards_tree(const BilliardsSearchResult& r, const DescribeOptions
   return j;
 }
 
-inline void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
+inline void billiards_lines(std::ostream& out, const BilliardsRunsResult& r) {
   out << fmt::format("{:>6} {:>12} {:>12} {:>9} {:>20} {:>20} {:>6} {:>4} {:>9} {}\n", "seed",
                      "events", "collisions", "seconds", "d (billiards)", "d (polished)", "bonds",
                      "ratt", "certified", "packing");
@@ -104,15 +104,15 @@ inline void billiards_lines(std::ostream& out, const BilliardsSearchResult& r) {
 namespace tripack::report {
 
 template <>
-struct View<jobs::BilliardsSearchResult> {
-  static Description describe(const jobs::BilliardsSearchResult& r, const DescribeOptions& o) {
+struct View<jobs::BilliardsRunsResult> {
+  static Description describe(const jobs::BilliardsRunsResult& r, const DescribeOptions& o) {
     using namespace results;
     return {Tree(billiards_tree(r, o)),
             "packings",
             {"n", "runs_asked", "runs_done", "effects", "seconds", "runs", "packings"}};
   }
 
-  static void text(std::ostream& out, const jobs::BilliardsSearchResult& r) {
+  static void text(std::ostream& out, const jobs::BilliardsRunsResult& r) {
     using namespace results;
     billiards_lines(out, r);
   }

@@ -1,4 +1,4 @@
-#include "jobs/billiards_search.hpp"
+#include "jobs/billiards_runs.hpp"
 
 #include <fmt/format.h>
 
@@ -38,15 +38,15 @@ void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_
 namespace {
 
 // Every run on the runner's threads; run r uses seed + r.
-std::vector<RunOutcome> run_all(const BilliardsSearch& search, const JobContext& job) {
-  std::vector<RunOutcome> runs(static_cast<std::size_t>(search.runs));
+std::vector<RunOutcome> run_all(const BilliardsRunsRequest& request, const JobContext& job) {
+  std::vector<RunOutcome> runs(static_cast<std::size_t>(request.runs));
   const ProgressFn progress = serialised(job.progress);
-  ProgressCounter counter("billiards", search.runs);
+  ProgressCounter counter("billiards", request.runs);
   JobItems items;
   items.count = runs.size();
   items.run = [&](std::size_t r) {
     RunOutcome& run = runs[r];
-    run.seed = search.seed + r;
+    run.seed = request.seed + r;
     std::mt19937_64 rng(run.seed);
     BilliardsOptions options;
     options.cancel = job.cancel;
@@ -55,12 +55,12 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search, const JobContext&
         Progress p = live;
         p.item = fmt::format("run {}", r);
         p.done = counter.done();
-        p.total = search.runs;
+        p.total = request.runs;
         progress(p);
       };
     try {
-      run.sim = run_billiards(search.scene, rng, options);
-      if (search.scene.n >= 2 && search.certify)
+      run.sim = run_billiards(request.scene, rng, options);
+      if (request.scene.n >= 2 && request.certify)
         run.analysis = pipeline::analyze_packing(run.sim.packing, {});
     } catch (const std::exception& e) {
       run.error = e.what();
@@ -72,7 +72,7 @@ std::vector<RunOutcome> run_all(const BilliardsSearch& search, const JobContext&
     Progress p = counter.finished(fmt::format("run {}", r), runs[r].sim.packing.d);
     if (progress) progress(p);
   };
-  ThreadExecutor(search.threads).run_items(items, job.cancel);
+  ThreadExecutor(request.threads).run_items(items, job.cancel);
   return runs;
 }
 
@@ -101,16 +101,16 @@ std::vector<PackingRecord> distinct_of(std::vector<RunOutcome>& runs, long long 
 
 }  // namespace
 
-BilliardsSearchResult search_billiards(const BilliardsSearch& search, const JobContext& job) {
-  if (search.runs < 1) throw std::invalid_argument("--runs must be at least 1");
+BilliardsRunsResult billiards_runs(const BilliardsRunsRequest& request, const JobContext& job) {
+  if (request.runs < 1) throw std::invalid_argument("--runs must be at least 1");
   const auto start = Clock::now();
-  BilliardsSearchResult result;
-  result.scene = search.scene;
-  result.runs_asked = search.runs;
-  result.runs = run_all(search, job);
+  BilliardsRunsResult result;
+  result.scene = request.scene;
+  result.runs_asked = request.runs;
+  result.runs = run_all(request, job);
   std::erase_if(result.runs, [](const RunOutcome& run) { return !run.ran; });
-  result.cancelled = result.runs.size() < static_cast<std::size_t>(search.runs);
-  result.packings = distinct_of(result.runs, search.scene.n);
+  result.cancelled = result.runs.size() < static_cast<std::size_t>(request.runs);
+  result.packings = distinct_of(result.runs, request.scene.n);
   result.seconds = seconds_since(start);
   return result;
 }

@@ -19,7 +19,7 @@
 
 namespace tripack::jobs {
 
-struct BilliardsSearch {
+struct BilliardsRunsRequest {
   Scene scene;  // validated, points filled (see prepare_scene)
   int runs = 10;
   std::uint64_t seed = 1;  // run r uses seed + r, so every run is reproducible on its own
@@ -43,7 +43,7 @@ struct RunOutcome {
   bool ran = false;   // false: cancelled before it started
 };
 
-struct BilliardsSearchResult {
+struct BilliardsRunsResult {
   Scene scene;
   int runs_asked = 0;
   std::vector<RunOutcome> runs;  // in seed order
@@ -51,7 +51,7 @@ struct BilliardsSearchResult {
   // The distinct packings the runs ended in (core/record.hpp: one per packing, each with its
   // billiards source: first seed and runs), ranked and labelled, best first.
   std::vector<PackingRecord> packings;
-  double seconds = 0;  // wall time of the whole search
+  double seconds = 0;  // wall time of all the runs
 };
 
 // A scene naming a built pattern gets its points from the builder (sim/ cannot build); n is
@@ -61,6 +61,6 @@ void prepare_scene(const Catalogue& catalogue, Scene& scene, long long expected_
 // Progress: stage "billiards", a live snapshot of a run under way (item "run R") about every
 // 0.5 s, and one report per finished run (d: its billiards d), one at a time. Cancelled: no new
 // run starts (runs under way finish).
-BilliardsSearchResult search_billiards(const BilliardsSearch& search, const JobContext& job = {});
+BilliardsRunsResult billiards_runs(const BilliardsRunsRequest& request, const JobContext& job = {});
 
 }  // namespace tripack::jobs
