@@ -131,12 +131,7 @@ bool certified_start(const Packing& start, const ProgressFn& progress, Analysis&
   if (pk.size() < 2) return false;
   // Same start as relax: centres projected inside (rounding-level excursions of wall contacts),
   // d the true minimum distance.
-  for (auto& p : pk.points)
-    for (int pass = 0; pass < 2; ++pass)
-      for (Side s : kSides) {
-        const long double w = wall_distance(p, s, 1.0L);
-        if (w < 0) p = p - wall_normal<long double>(s) * w;
-      }
+  for (auto& p : pk.points) project_inside(p, 2);
   pk.d = min_pair_distance(pk.points, pk.d > 0 ? 1.5L * pk.d : 1);
   if (!std::isfinite(pk.d) || !(pk.d > 0)) return false;
   const long double d_start = pk.d;

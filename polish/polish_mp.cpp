@@ -901,16 +901,19 @@ struct ReadBack {
     mpfr_div_2ui(t.get(), y[i].get(), 1, kRnd);
     mpfr_sub(out.get(), out.get(), t.get(), kRnd);
   }
+  // Centre a minus centre c into (dx, dy), its length into length.
+  void difference(std::size_t a, std::size_t c, Mp& dx, Mp& dy, Mp& length) const {
+    mpfr_sub(dx.get(), x[a].get(), x[c].get(), kRnd);
+    mpfr_sub(dy.get(), y[a].get(), y[c].get(), kRnd);
+    mpfr_hypot(length.get(), dx.get(), dy.get(), kRnd);
+  }
   // Gap of bond b in units of d into out.
   void gap(const Bond& b, Mp& out, Mp& t, Mp& u) const {
     const auto a = static_cast<std::size_t>(b.a);
     if (b.is_wall()) {
       wall(a, b.side(), out, t);
     } else {
-      const auto c = static_cast<std::size_t>(b.b);
-      mpfr_sub(t.get(), x[a].get(), x[c].get(), kRnd);
-      mpfr_sub(u.get(), y[a].get(), y[c].get(), kRnd);
-      mpfr_hypot(out.get(), t.get(), u.get(), kRnd);
+      difference(a, static_cast<std::size_t>(b.b), t, u, out);
       mpfr_sub(out.get(), out.get(), d.get(), kRnd);
     }
     mpfr_div(out.get(), out.get(), d.get(), kRnd);
@@ -934,10 +937,7 @@ struct ReadBack {
       mpfr_set_si_2exp(uy.get(), -1, -1, kRnd);
       return;
     }
-    const auto c = static_cast<std::size_t>(b.b);
-    mpfr_sub(ux.get(), x[a].get(), x[c].get(), kRnd);
-    mpfr_sub(uy.get(), y[a].get(), y[c].get(), kRnd);
-    mpfr_hypot(t.get(), ux.get(), uy.get(), kRnd);
+    difference(a, static_cast<std::size_t>(b.b), ux, uy, t);
     mpfr_div(ux.get(), ux.get(), t.get(), kRnd);
     mpfr_div(uy.get(), uy.get(), t.get(), kRnd);
   }
