@@ -46,6 +46,13 @@ std::vector<int> motion_columns(std::size_t n, const std::vector<int>& rattlers,
   return col;
 }
 
+// A certificate declines at once without a moving disk or a bond: `declined` says so.
+bool nothing_to_certify(int columns, const std::vector<Bond>& bonds, std::string& declined) {
+  if (columns > 0 && !bonds.empty()) return false;
+  declined = "no bonds between non-rattlers";
+  return true;
+}
+
 // The opening-rate row of bond b: coefficients on the motion columns.
 std::vector<std::pair<int, double>> opening_row(const Packing& pk, const Bond& b,
                                                 const std::vector<int>& col) {
@@ -259,10 +266,7 @@ FastCertificate fast_certificate(const Packing& pk, const std::vector<Bond>& bon
   int columns = 0;
   const auto col = motion_columns(pk.size(), rattlers, columns);
   const auto m = static_cast<Eigen::Index>(bonds.size());
-  if (columns == 0 || m == 0) {
-    out.declined = "no bonds between non-rattlers";
-    return out;
-  }
+  if (nothing_to_certify(columns, bonds, out.declined)) return out;
   std::vector<Eigen::Triplet<double>> t;
   for (std::size_t b = 0; b < bonds.size(); ++b)
     for (const auto& [c, v] : opening_row(pk, bonds[b], col))
@@ -321,10 +325,7 @@ MultiprecisionCertificate multiprecision_certificate(const MultiprecisionPolish&
   int columns = 0;
   const auto col = motion_columns(pk.size(), rattlers, columns);
   const auto m = static_cast<Eigen::Index>(bonds.size());
-  if (columns == 0 || m == 0) {
-    out.declined = "no bonds between non-rattlers";
-    return out;
-  }
+  if (nothing_to_certify(columns, bonds, out.declined)) return out;
   const std::vector<Vec2L> dirs = precise_directions(polish, bonds);
   std::vector<Eigen::Triplet<long double>> t;
   for (std::size_t b = 0; b < bonds.size(); ++b) {

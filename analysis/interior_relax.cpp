@@ -182,22 +182,10 @@ InteriorRelaxReport interior_relax(Packing& pk, const InteriorRelaxOptions& opt)
   const std::size_t n = pk.size();
   if (n < 2) throw std::invalid_argument("relax needs at least two disks");
   InteriorRelaxReport rep;
-  // Centres projected inside, then shrunk towards the centroid by a relative 1e-9 so that every
-  // wall slack is strictly positive. (Near a 60-degree corner each projection onto one side
-  // leaves half the excursion outside the other: repeat until inside.)
+  // Centres projected inside (until inside), then shrunk towards the centroid by a relative 1e-9
+  // so that every wall slack is strictly positive.
   std::vector<Vec2L> start = pk.points;
-  for (auto& p : start)
-    for (int pass = 0; pass < 80; ++pass) {
-      bool inside = true;
-      for (Side side : kSides) {
-        const long double w = wall_distance(p, side, 1.0L);
-        if (w < 0) {
-          p = p - wall_normal<long double>(side) * w;
-          inside = false;
-        }
-      }
-      if (inside) break;
-    }
+  for (auto& p : start) project_inside(p, 80);
   const long double d0 = min_pair_distance(start, pk.d > 0 ? 1.5L * pk.d : 1.0L);
   if (!(d0 > 0) || !std::isfinite(d0)) throw std::invalid_argument("relax: coincident disks");
   rep.d_start = d0;

@@ -33,12 +33,7 @@ RelaxReport relax_packing(Packing& pk, const RelaxOptions& opt) {
   RelaxReport rep;
   // Start inside: project any centre outside onto the triangle (twice, for the corners). Then the
   // zero step is feasible and d can only grow.
-  for (auto& p : pk.points)
-    for (int pass = 0; pass < 2; ++pass)
-      for (Side s : kSides) {
-        const long double w = wall_distance(p, s, 1.0L);
-        if (w < 0) p = p - wall_normal<long double>(s) * w;
-      }
+  for (auto& p : pk.points) project_inside(p, 2);
   long double d = true_min_distance(pk.points, pk.d > 0 ? pk.d : 1);
   rep.d_start = d;
   long double trust = opt.trust;
@@ -109,11 +104,7 @@ RelaxReport relax_packing(Packing& pk, const RelaxOptions& opt) {
       trial[i].x += sol.x[2 * i] * box;
       trial[i].y += sol.x[2 * i + 1] * box;
       step = std::max({step, std::fabs(sol.x[2 * i] * box), std::fabs(sol.x[2 * i + 1] * box)});
-      // Project rounding-level excursions back inside.
-      for (Side s : kSides) {
-        const long double w = wall_distance(trial[i], s, 1.0L);
-        if (w < 0) trial[i] = trial[i] - wall_normal<long double>(s) * w;
-      }
+      project_inside(trial[i], 1);  // rounding-level excursions back inside
     }
     const long double d_trial = true_min_distance(trial, d);
     if (opt.on_step) opt.on_step(rep.iterations, std::max(d, d_trial));

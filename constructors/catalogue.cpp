@@ -53,6 +53,22 @@ long opt_long(const YAML::Node& node, const char* key, long fallback, const std:
   }
 }
 
+// The entries of the list `key` (none when it is absent), each about the members it names by k
+// and p (0: any): read_rest reads what else an entry holds.
+template <class Entry, class ReadRest>
+void read_members(const YAML::Node& node, const char* key, const std::string& ctx,
+                  std::vector<Entry>& out, ReadRest read_rest) {
+  const YAML::Node list = node[key];
+  if (!list) return;
+  for (const auto& x : list) {
+    Entry e;
+    e.k = opt_long(x, "k", 0, ctx);
+    e.p = opt_long(x, "p", 0, ctx);
+    read_rest(x, e);
+    out.push_back(std::move(e));
+  }
+}
+
 ClassInfo parse_class(const YAML::Node& node) {
   if (!node.IsMap())
     throw CatalogueError("classes.yaml: every class must be a mapping (" + where(node) + ")");
@@ -114,31 +130,20 @@ ClassInfo parse_class(const YAML::Node& node) {
       c.variants.push_back(std::move(vi));
     }
   }
-  if (const YAML::Node xs = node["exact_L"]) {
-    for (const auto& x : xs) {
-      ExactL e;
-      e.k = opt_long(x, "k", 0, ctx);
-      e.p = opt_long(x, "p", 0, ctx);
-      e.L = expr(req_string(x, "L", ctx + ".exact_L"), ctx + ".exact_L");
-      e.source = opt_string(x, "source");
-      c.exact_L.push_back(std::move(e));
-    }
-  }
-  if (const YAML::Node rs = node["references"]) {
-    for (const auto& r : rs) {
-      ReferenceValue ref;
-      ref.k = opt_long(r, "k", 0, ctx);
-      ref.p = opt_long(r, "p", 0, ctx);
-      ref.n = opt_long(r, "n", 0, ctx);
-      ref.variant = opt_string(r, "variant");
-      ref.label = opt_string(r, "label");
-      ref.source = opt_string(r, "source");
-      if (r["d"]) ref.d = r["d"].as<std::string>();
-      if (r["bonds"]) ref.bonds = opt_long(r, "bonds", 0, ctx);
-      if (r["rattlers"]) ref.rattlers = opt_long(r, "rattlers", 0, ctx);
-      c.references.push_back(std::move(ref));
-    }
-  }
+  read_members(node, "exact_L", ctx, c.exact_L, [&](const YAML::Node& x, ExactL& e) {
+    e.L = expr(req_string(x, "L", ctx + ".exact_L"), ctx + ".exact_L");
+    e.source = opt_string(x, "source");
+  });
+  read_members(node, "references", ctx, c.references,
+               [&](const YAML::Node& r, ReferenceValue& ref) {
+                 ref.n = opt_long(r, "n", 0, ctx);
+                 ref.variant = opt_string(r, "variant");
+                 ref.label = opt_string(r, "label");
+                 ref.source = opt_string(r, "source");
+                 if (r["d"]) ref.d = r["d"].as<std::string>();
+                 if (r["bonds"]) ref.bonds = opt_long(r, "bonds", 0, ctx);
+                 if (r["rattlers"]) ref.rattlers = opt_long(r, "rattlers", 0, ctx);
+               });
   return c;
 }
 
@@ -342,20 +347,29 @@ std::string Catalogue::resolve_variant(const ClassInfo& c, long k,
                        "' (valid: " + list + ")");
 }
 
+namespace {
+
+// A member's count (bonds or rattlers): the variant's own expression when it has one, else the
+// class's; none when neither has one.
+std::optional<long long> member_count(const Expression* of_variant, const Expression& of_class,
+                                      long k, long p) {
+  const Expression& e = (of_variant && !of_variant->empty()) ? *of_variant : of_class;
+  if (e.empty()) return std::nullopt;
+  return e.eval<long long>(integer_env(k, p));
+}
+
+}  // namespace
+
 std::optional<long long> Catalogue::bonds_of(const ClassInfo& c, long k, long p,
                                              const std::string& v) const {
   const VariantInfo* vi = v.empty() ? nullptr : variant_info(c, k, v);
-  const Expression& e = (vi && !vi->bonds.empty()) ? vi->bonds : c.bonds;
-  if (e.empty()) return std::nullopt;
-  return e.eval<long long>(integer_env(k, p));
+  return member_count(vi ? &vi->bonds : nullptr, c.bonds, k, p);
 }
 
 std::optional<long long> Catalogue::rattlers_of(const ClassInfo& c, long k, long p,
                                                 const std::string& v) const {
   const VariantInfo* vi = v.empty() ? nullptr : variant_info(c, k, v);
-  const Expression& e = (vi && !vi->rattlers.empty()) ? vi->rattlers : c.rattlers;
-  if (e.empty()) return std::nullopt;
-  return e.eval<long long>(integer_env(k, p));
+  return member_count(vi ? &vi->rattlers : nullptr, c.rattlers, k, p);
 }
 
 std::optional<long double> Catalogue::L_of(const ClassInfo& c, long k, long p) const {

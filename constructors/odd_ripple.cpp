@@ -78,6 +78,19 @@ bool raise(const Vec2L& f, const Vec2L& a, Vec2L& r, Vec2L& next_floor) {
   return true;
 }
 
+// The ripple march from R_first on, for side L: R_i touches F_{i+1} and A_{2i+1}, F_{i+2} sits on
+// the floor at distance 1 from R_i. Returns the mismatch F_{k+1}.x - L, or nullopt if a raised
+// disk cannot be placed.
+std::optional<long double> march_on(long k, long double L, long first, std::vector<Vec2L>& floor,
+                                    std::vector<Vec2L>& raised) {
+  for (long i = first; i < k; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (!raise(floor[u + 1], site(L, 2 * k - 1, 2 * i + 1), raised[u], floor[u + 2]))
+      return std::nullopt;
+  }
+  return floor[static_cast<std::size_t>(k + 1)].x - L;
+}
+
 // Marches from the left corner for side L; returns F_{k+1}.x - L, or nullopt if the chain
 // cannot be closed at this L.
 std::optional<long double> march(long k, long double L, Ripple& c) {
@@ -98,12 +111,7 @@ std::optional<long double> march(long k, long double L, Ripple& c) {
   c.a3 = *a3;
   c.floor[2] = c.floor[1] + D::e0;
   if (!raise(c.floor[2], c.a3, c.raised[1], c.floor[3])) return std::nullopt;
-  for (long i = 2; i < k; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    if (!raise(c.floor[u + 1], site(L, row, 2 * i + 1), c.raised[u], c.floor[u + 2]))
-      return std::nullopt;
-  }
-  return c.floor[static_cast<std::size_t>(k + 1)].x - L;
+  return march_on(k, L, 2, c.floor, c.raised);
 }
 
 // Solves a shooting equation f(L) = 0, L = 2k - 1 + 2 x0 (x0 = A_0.x on the lattice), where
@@ -173,13 +181,21 @@ long double shoot(long k, const std::function<std::optional<long double>(long do
   return base + 2 * x;
 }
 
-Ripple solve_ripple(long k) {
-  Ripple c;
+// The free disks of a modification (Ripple or Other) for the side L that closes the chain:
+// march(k, L, c) places them for one L, shoot finds L.
+template <class Free>
+Free solve_chain(long k, std::optional<long double> (*march)(long, long double, Free&),
+                 const std::string& what) {
+  Free c;
   c.floor.resize(static_cast<std::size_t>(k + 2));
   c.raised.resize(static_cast<std::size_t>(k));
   shoot(
-      k, [&](long double L) { return march(k, L, c); }, "odd ripple");
+      k, [&](long double L) { return march(k, L, c); }, what);
   return c;
+}
+
+Ripple solve_ripple(long k) {
+  return solve_chain<Ripple>(k, march, "odd ripple");
 }
 // The other modification (docs/odd-ripple-other.md): the same chain F0 R0 F1 F2 R1 F3 ... below
 // a top Delta(2k) whose row 2k-2 has B0 (j=0) and B1 (j=1) free and whose anchor row has A0 free
@@ -247,21 +263,11 @@ std::optional<long double> other_march(long k, long double L, Other& c) {
       hi = mid;
   }
   if (!other_cluster(k, L, hi, c)) return std::nullopt;
-  for (long i = 1; i < k; ++i) {
-    const auto u = static_cast<std::size_t>(i);
-    if (!raise(c.floor[u + 1], site(L, m - 1, 2 * i + 1), c.raised[u], c.floor[u + 2]))
-      return std::nullopt;
-  }
-  return c.floor[static_cast<std::size_t>(k + 1)].x - L;
+  return march_on(k, L, 1, c.floor, c.raised);
 }
 
 Other solve_other(long k) {
-  Other c;
-  c.floor.resize(static_cast<std::size_t>(k + 2));
-  c.raised.resize(static_cast<std::size_t>(k));
-  shoot(
-      k, [&](long double L) { return other_march(k, L, c); }, "odd ripple (other)");
-  return c;
+  return solve_chain<Other>(k, other_march, "odd ripple (other)");
 }
 
 }  // namespace
@@ -282,6 +288,17 @@ class RippleFrame {
     return top_ + static_cast<int>(DiskUnitsPattern::index_in_triangle(m_, i - j, j));
   }
   long m() const { return m_; }
+  // A_j and B_j (docs/classes.md §7): disk j of the top Delta(2k)'s bottom row (row 2k-1), and of
+  // the row above it (row 2k-2).
+  int a(long j) const { return site(m_ - 1, j); }
+  int b(long j) const { return site(m_ - 2, j); }
+  // The top Delta(2k) with a few disks moved off their sites and the rattlers taken out (see
+  // keep_lattice_except), and the bottom chain below it (add_chain).
+  void arrange(const std::vector<std::pair<int, Vec2L>>& moved, const std::vector<int>& rattlers,
+               const std::vector<Vec2L>& floor, const std::vector<Vec2L>& raised) {
+    keep_lattice_except(moved, rattlers);
+    add_chain(floor, raised);
+  }
   // The lattice contacts (pairs and side walls) of the disks that stay on their sites; then the
   // moved disks go to their places.
   void keep_lattice_except(const std::vector<std::pair<int, Vec2L>>& moved,
@@ -322,7 +339,20 @@ class RippleFrame {
   int floor_disk(long i) const { return fl_[static_cast<std::size_t>(i)]; }
   int raised_disk(long i) const { return ra_[static_cast<std::size_t>(i)]; }
   void bond(int i, int j) { bonds_.push_back(Bond::pair(i, j)); }
+  template <std::size_t N>
+  void bond_all(const int (&pairs)[N][2]) {
+    for (const auto& e : pairs) bond(e[0], e[1]);
+  }
   void wall_bond(int i, Side side) { bonds_.push_back(Bond::wall(i, side)); }
+  // The rattlers A_j of the top Delta(2k)'s bottom row: every other disk from A_first on, short
+  // of the last two.
+  void add_top_row_rattlers(std::vector<int>& rattlers, long first) const {
+    for (long j = first; j < m_ - 1; j += 2) rattlers.push_back(a(j));
+  }
+  // Each raised disk R_i from R_first on touches A_{2i+1}, the bottom-row disk above it.
+  void bond_raised_to_top_row(long first) {
+    for (long i = first; i < k_; ++i) bond(raised_disk(i), a(2 * i + 1));
+  }
 
   // The shooting start satisfies the system to a few ulp of the coordinates (5e-16 at k = 200).
   // Accept ~100 ulp (relative to L) rather than the polisher's default: refining further would
@@ -365,22 +395,19 @@ Pattern build_odd_ripple_depressed(long k) {
   if (k < 3) throw std::invalid_argument("Delta(2k+1)+1 (depressed cage) needs k >= 3");
   const Ripple c = solve_ripple(k);
   RippleFrame f(k, c.L);
-  const long m = f.m();  // the top triangle Delta(m)
-  auto s = [&](long i, long j) { return f.site(i, j); };
-  const int a0 = s(m - 1, 0), a1 = s(m - 1, 1), a3 = s(m - 1, 3);
-  const int b1 = s(m - 2, 1), b2 = s(m - 2, 2);
+  const int a0 = f.a(0), a1 = f.a(1), a3 = f.a(3), b1 = f.b(1), b2 = f.b(2);
   std::vector<int> rattlers;  // A2, A4, ..., A_{2k-2}
-  for (long j = 2; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
-  f.keep_lattice_except({{a1, c.a1}, {a3, c.a3}, {b1, c.b1}, {b2, c.b2}}, rattlers);
-  f.add_chain(c.floor, c.raised);
+  f.add_top_row_rattlers(rattlers, 2);
+  f.arrange({{a1, c.a1}, {a3, c.a3}, {b1, c.b1}, {b2, c.b2}}, rattlers, c.floor, c.raised);
   // The contacts of the depressed cage (docs/classes.md §7).
   const int r0 = f.raised_disk(0), r1 = f.raised_disk(1), f1 = f.floor_disk(1);
-  const int cage[][2] = {
-      {r0, a0},          {r0, a1}, {f1, a1},          {a1, a0}, {a1, b1},  // the depressed disk A1
-      {b1, s(m - 2, 0)}, {b1, b2}, {b2, s(m - 3, 1)}, {b2, a3},            // B1, B2 (row 2k-2)
-      {a3, s(m - 2, 3)}, {a3, r1}};                                        // A3
-  for (const auto& e : cage) f.bond(e[0], e[1]);
-  for (long i = 2; i < k; ++i) f.bond(f.raised_disk(i), s(m - 1, 2 * i + 1));
+  // c1: disk 1 of row 2k-3.
+  const int b0 = f.b(0), b3 = f.b(3), c1 = f.site(f.m() - 3, 1);
+  const int cage[][2] = {{r0, a0}, {r0, a1}, {f1, a1}, {a1, a0}, {a1, b1},  // the depressed disk A1
+                         {b1, b0}, {b1, b2}, {b2, c1}, {b2, a3},            // B1, B2 (row 2k-2)
+                         {a3, b3}, {a3, r1}};                               // A3
+  f.bond_all(cage);
+  f.bond_raised_to_top_row(2);
   return f.finish(rattlers, 0.2L, "odd ripple");
 }
 
@@ -388,23 +415,20 @@ Pattern build_odd_ripple_other(long k) {
   if (k < 2) throw std::invalid_argument("Delta(2k+1)+1 (other modification) needs k >= 2");
   const Other c = solve_other(k);
   RippleFrame f(k, c.L);
-  const long m = f.m();  // the top triangle Delta(m)
-  auto s = [&](long i, long j) { return f.site(i, j); };
-  const int a0 = s(m - 1, 0), a2 = s(m - 1, 2), a3 = s(m - 1, 3);
-  const int b0 = s(m - 2, 0), b1 = s(m - 2, 1);
-  std::vector<int> rattlers{s(m - 1, 1)};  // A1, A4, A6, ..., A_{2k-2}
-  for (long j = 4; j < m - 1; j += 2) rattlers.push_back(s(m - 1, j));
-  f.keep_lattice_except({{a0, c.a0}, {a2, c.a2}, {b0, c.b0}, {b1, c.b1}}, rattlers);
-  f.add_chain(c.floor, c.raised);
+  const int a0 = f.a(0), a2 = f.a(2), a3 = f.a(3), b0 = f.b(0), b1 = f.b(1);
+  std::vector<int> rattlers{f.a(1)};  // A1, A4, A6, ..., A_{2k-2}
+  f.add_top_row_rattlers(rattlers, 4);
+  f.arrange({{a0, c.a0}, {a2, c.a2}, {b0, c.b0}, {b1, c.b1}}, rattlers, c.floor, c.raised);
   // The cage contacts (docs/odd-ripple-other.md).
   const int r0 = f.raised_disk(0), f2 = f.floor_disk(2);
+  // c0: disk 0 of row 2k-3.
+  const int b2 = f.b(2), c0 = f.site(f.m() - 3, 0);
   f.wall_bond(a0, Side::Left);
-  const int cage[][2] = {
-      {r0, a0}, {a0, b0},          {b0, s(m - 3, 0)},  // A0 slides up the left wall
-      {b0, b1}, {b1, s(m - 2, 2)},                     // B0, B1 (row 2k-2)
-      {b1, a2}, {a2, a3},          {a2, f2}};          // A2 sits on the floor disk F2
-  for (const auto& e : cage) f.bond(e[0], e[1]);
-  for (long i = 1; i < k; ++i) f.bond(f.raised_disk(i), s(m - 1, 2 * i + 1));
+  const int cage[][2] = {{r0, a0}, {a0, b0}, {b0, c0},   // A0 slides up the left wall
+                         {b0, b1}, {b1, b2},             // B0, B1 (row 2k-2)
+                         {b1, a2}, {a2, a3}, {a2, f2}};  // A2 sits on the floor disk F2
+  f.bond_all(cage);
+  f.bond_raised_to_top_row(1);
   // k = 2: R1 also touches A2 (F2 R1 A3 A2 is a rhombus with the unit diagonal A2 R1; the
   // geometry forces it, it is not an equation of the solve).
   if (k == 2) f.bond(f.raised_disk(1), a2);

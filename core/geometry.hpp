@@ -89,6 +89,24 @@ Vec2T<T> wall_normal(Side s) {
   return {};
 }
 
+// p moved into the unit triangle: projected onto each side it lies outside of, pass after pass
+// until one finds it inside, at most `passes` passes (near a 60-degree corner each projection
+// onto one side leaves half the excursion outside the other).
+template <class T>
+void project_inside(Vec2T<T>& p, int passes) {
+  for (int pass = 0; pass < passes; ++pass) {
+    bool inside = true;
+    for (Side side : kSides) {
+      const T w = wall_distance(p, side, T(1));
+      if (w < 0) {
+        p = p - wall_normal<T>(side) * w;
+        inside = false;
+      }
+    }
+    if (inside) break;
+  }
+}
+
 // Lattice directions used by every construction (disk units).
 template <class T>
 struct Directions {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "exact/flint_tools.hpp"
@@ -69,29 +70,20 @@ std::vector<int> row_reduce(Matrix& m, const flint::Field& field) {
   return pivots;
 }
 
-}  // namespace
+using Vector = std::vector<std::unique_ptr<FmpqPoly>>;  // a vector of elements of K, one a bond
 
-StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
-                                         const ExactConfiguration& config,
-                                         const std::vector<long double>& forces) {
-  StrictOptimality out;
-  if (!config.proven) {
-    out.reason = "statement (I) is not proven";
-    return out;
-  }
-  const flint::Field field(config.field);
-  const int digits = in.digits;
-  const slong prec = flint::bits_for(2 * digits);
-  // Held disks and their columns.
-  const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
-  std::map<int, int> column_of;
-  for (int i = 0; i < in.n; ++i)
-    if (!rattlers.count(i)) column_of[i] = 2 * static_cast<int>(column_of.size());
-  const int columns = 2 * static_cast<int>(column_of.size());
+Vector zero_vector(int size) {
+  Vector v;
+  for (int i = 0; i < size; ++i) v.push_back(std::make_unique<FmpqPoly>());
+  return v;
+}
+
+// G^T over K: one row per coordinate of a held disk (column_of: the disk's first row), one column
+// per bond.
+Matrix transposed_bond_matrix(const ConfigurationInput& in, const ExactConfiguration& config,
+                              const flint::Field& field, const std::map<int, int>& column_of) {
   const int bonds = static_cast<int>(in.bonds.size());
-  out.columns = columns;
-  // G^T: one row per column of G, one column per bond.
-  Matrix gt(columns, bonds);
+  Matrix gt(2 * static_cast<int>(column_of.size()), bonds);
   FmpqPoly xa, ya, xb, yb, s3;
   field.set(s3.value, config.sqrt3_in_field);
   for (int b = 0; b < bonds; ++b) {
@@ -123,6 +115,131 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
     fmpq_poly_neg(gt.at(cb, b), gt.at(ca, b));
     fmpq_poly_neg(gt.at(cb + 1, b), gt.at(ca + 1, b));
   }
+  return gt;
+}
+
+// The self-stresses from G^T's reduced row echelon form: one basis vector per free column.
+std::vector<Vector> self_stress_basis(Matrix& reduced, const std::vector<int>& pivots, int bonds) {
+  std::vector<int> free;
+  {
+    std::set<int> pivot_set(pivots.begin(), pivots.end());
+    for (int c = 0; c < bonds; ++c)
+      if (!pivot_set.count(c)) free.push_back(c);
+  }
+  std::vector<Vector> basis;
+  for (int f : free) {
+    Vector v = zero_vector(bonds);
+    fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
+    for (std::size_t r = 0; r < pivots.size(); ++r)
+      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value,
+                    reduced.at(static_cast<int>(r), f));
+    basis.push_back(std::move(v));
+  }
+  return basis;
+}
+
+// The combination of the basis: one basis vector (sign made positive), or the least-squares fit
+// of the numerical stress, rescaled to our rows (pair rows carry d, the side walls 2). Empty, with
+// `reason` set, when there are several and no numerical stress.
+std::optional<Eigen::VectorXd> stress_combination(const ConfigurationInput& in,
+                                                  const ExactConfiguration& config,
+                                                  const flint::Field& field,
+                                                  const std::vector<Vector>& basis,
+                                                  const std::vector<long double>& forces,
+                                                  const arb_t t0, slong prec, std::string& reason) {
+  const int bonds = static_cast<int>(in.bonds.size());
+  // The basis at t0.
+  Arb value;
+  Eigen::MatrixXd at(bonds, static_cast<Eigen::Index>(basis.size()));
+  for (std::size_t k = 0; k < basis.size(); ++k)
+    for (int c = 0; c < bonds; ++c) {
+      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0, prec);
+      at(c, static_cast<Eigen::Index>(k)) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
+    }
+  Eigen::VectorXd coefficients(static_cast<Eigen::Index>(basis.size()));
+  if (basis.size() == 1) {
+    coefficients(0) = at.col(0).sum() < 0 ? -1.0 : 1.0;
+    return coefficients;
+  }
+  if (forces.size() != static_cast<std::size_t>(bonds)) {
+    reason = fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
+    return std::nullopt;
+  }
+  Arb dv;
+  FmpqPoly dk;
+  field.set(dk.value, config.d_in_field);
+  flint::Field::evaluate(dv.value, dk.value, t0, prec);
+  const double d = arf_get_d(arb_midref(dv.value), ARF_RND_NEAR);
+  Eigen::VectorXd target(bonds);
+  for (int b = 0; b < bonds; ++b) {
+    const Bond& bond = in.bonds[static_cast<std::size_t>(b)];
+    const double f = static_cast<double>(forces[static_cast<std::size_t>(b)]);
+    target(b) = !bond.is_wall() ? f / d : (bond.side() == Side::Bottom ? f : f / 2);
+  }
+  coefficients = at.colPivHouseholderQr().solve(target);
+  return coefficients;
+}
+
+// The stress: the combination's coefficients rounded to rationals (52 bits of the largest): the
+// stress is then exact whatever the coefficients are.
+Vector exact_stress(const std::vector<Vector>& basis, const Eigen::VectorXd& coefficients,
+                    int bonds) {
+  FmpqPoly term;
+  flint::Fmpz numerator, denominator;
+  fmpz_one(denominator.value);
+  fmpz_mul_2exp(denominator.value, denominator.value, 52);
+  flint::Fmpq c;
+  Vector stress = zero_vector(bonds);
+  const double scale = coefficients.cwiseAbs().maxCoeff();
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    fmpz_set_d(numerator.value,
+               std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
+    fmpq_set_fmpz_frac(c.value, numerator.value, denominator.value);
+    for (int b = 0; b < bonds; ++b) {
+      fmpq_poly_scalar_mul_fmpq(term.value, basis[k][static_cast<std::size_t>(b)]->value, c.value);
+      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value,
+                    stress[static_cast<std::size_t>(b)]->value, term.value);
+    }
+  }
+  return stress;
+}
+
+// G^T stress = 0 exactly (by construction; checked).
+bool balances_exactly(Matrix& gt, const Vector& stress, const flint::Field& field) {
+  FmpqPoly sum, product;
+  for (int r = 0; r < gt.rows(); ++r) {
+    fmpq_poly_zero(sum.value);
+    for (int b = 0; b < gt.columns(); ++b) {
+      field.mul(product.value, gt.at(r, b), stress[static_cast<std::size_t>(b)]->value);
+      fmpq_poly_add(sum.value, sum.value, product.value);
+    }
+    if (!field.is_zero(sum.value)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
+                                         const ExactConfiguration& config,
+                                         const std::vector<long double>& forces) {
+  StrictOptimality out;
+  if (!config.proven) {
+    out.reason = "statement (I) is not proven";
+    return out;
+  }
+  const flint::Field field(config.field);
+  const int digits = in.digits;
+  const slong prec = flint::bits_for(2 * digits);
+  // Held disks and their columns.
+  const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
+  std::map<int, int> column_of;
+  for (int i = 0; i < in.n; ++i)
+    if (!rattlers.count(i)) column_of[i] = 2 * static_cast<int>(column_of.size());
+  const int columns = 2 * static_cast<int>(column_of.size());
+  const int bonds = static_cast<int>(in.bonds.size());
+  out.columns = columns;
+  Matrix gt = transposed_bond_matrix(in, config, field, column_of);
   Matrix reduced(columns, bonds);
   for (int r = 0; r < columns; ++r)
     for (int c = 0; c < bonds; ++c) fmpq_poly_set(reduced.at(r, c), gt.at(r, c));
@@ -138,88 +255,17 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
     out.reason = "no self-stress (G^T is injective)";
     return out;
   }
-  // The self-stresses: one basis vector per free column.
-  std::vector<int> free;
-  {
-    std::set<int> pivot_set(pivots.begin(), pivots.end());
-    for (int c = 0; c < bonds; ++c)
-      if (!pivot_set.count(c)) free.push_back(c);
-  }
-  std::vector<std::vector<std::unique_ptr<FmpqPoly>>> basis;
-  for (int f : free) {
-    std::vector<std::unique_ptr<FmpqPoly>> v;
-    for (int c = 0; c < bonds; ++c) v.push_back(std::make_unique<FmpqPoly>());
-    fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
-    for (std::size_t r = 0; r < pivots.size(); ++r)
-      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value,
-                    reduced.at(static_cast<int>(r), f));
-    basis.push_back(std::move(v));
-  }
-  // At t0.
+  const std::vector<Vector> basis = self_stress_basis(reduced, pivots, bonds);
   Arb t0, value;
   flint::ball_of(t0.value, config.embedding, prec);
-  Eigen::MatrixXd at(bonds, static_cast<Eigen::Index>(basis.size()));
-  for (std::size_t k = 0; k < basis.size(); ++k)
-    for (int c = 0; c < bonds; ++c) {
-      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0.value,
-                             prec);
-      at(c, static_cast<Eigen::Index>(k)) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
-    }
-  // The combination: one basis vector (sign made positive), or the least-squares fit of the
-  // numerical stress, rescaled to our rows (pair rows carry d, the side walls 2), rounded to
-  // rationals: the stress is then exact whatever the coefficients are.
-  Eigen::VectorXd coefficients(static_cast<Eigen::Index>(basis.size()));
-  if (basis.size() == 1) {
-    coefficients(0) = at.col(0).sum() < 0 ? -1.0 : 1.0;
-  } else {
-    if (forces.size() != static_cast<std::size_t>(bonds)) {
-      out.reason =
-          fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
-      return out;
-    }
-    Arb dv;
-    FmpqPoly dk;
-    field.set(dk.value, config.d_in_field);
-    flint::Field::evaluate(dv.value, dk.value, t0.value, prec);
-    const double d = arf_get_d(arb_midref(dv.value), ARF_RND_NEAR);
-    Eigen::VectorXd target(bonds);
-    for (int b = 0; b < bonds; ++b) {
-      const Bond& bond = in.bonds[static_cast<std::size_t>(b)];
-      const double f = static_cast<double>(forces[static_cast<std::size_t>(b)]);
-      target(b) = !bond.is_wall() ? f / d : (bond.side() == Side::Bottom ? f : f / 2);
-    }
-    coefficients = at.colPivHouseholderQr().solve(target);
-  }
-  FmpqPoly term;
-  flint::Fmpz numerator, denominator;
-  fmpz_one(denominator.value);
-  fmpz_mul_2exp(denominator.value, denominator.value, 52);
-  flint::Fmpq c;
-  std::vector<std::unique_ptr<FmpqPoly>> stress;
-  for (int b = 0; b < bonds; ++b) stress.push_back(std::make_unique<FmpqPoly>());
-  const double scale = coefficients.cwiseAbs().maxCoeff();
-  for (std::size_t k = 0; k < basis.size(); ++k) {
-    fmpz_set_d(numerator.value,
-               std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
-    fmpq_set_fmpz_frac(c.value, numerator.value, denominator.value);
-    for (int b = 0; b < bonds; ++b) {
-      fmpq_poly_scalar_mul_fmpq(term.value, basis[k][static_cast<std::size_t>(b)]->value, c.value);
-      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value,
-                    stress[static_cast<std::size_t>(b)]->value, term.value);
-    }
-  }
-  // Exactly balanced (by construction; checked), strictly positive at t0 (Arb).
-  FmpqPoly sum, product;
-  for (int r = 0; r < columns; ++r) {
-    fmpq_poly_zero(sum.value);
-    for (int b = 0; b < bonds; ++b) {
-      field.mul(product.value, gt.at(r, b), stress[static_cast<std::size_t>(b)]->value);
-      fmpq_poly_add(sum.value, sum.value, product.value);
-    }
-    if (!field.is_zero(sum.value)) {
-      out.reason = "the stress does not balance exactly";
-      return out;
-    }
+  const auto coefficients =
+      stress_combination(in, config, field, basis, forces, t0.value, prec, out.reason);
+  if (!coefficients) return out;
+  const Vector stress = exact_stress(basis, *coefficients, bonds);
+  // Exactly balanced, strictly positive at t0 (Arb).
+  if (!balances_exactly(gt, stress, field)) {
+    out.reason = "the stress does not balance exactly";
+    return out;
   }
   double smallest = INFINITY, largest = 0;
   for (int b = 0; b < bonds; ++b) {

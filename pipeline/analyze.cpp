@@ -131,12 +131,7 @@ bool certified_start(const Packing& start, const ProgressFn& progress, Analysis&
   if (pk.size() < 2) return false;
   // Same start as relax: centres projected inside (rounding-level excursions of wall contacts),
   // d the true minimum distance.
-  for (auto& p : pk.points)
-    for (int pass = 0; pass < 2; ++pass)
-      for (Side s : kSides) {
-        const long double w = wall_distance(p, s, 1.0L);
-        if (w < 0) p = p - wall_normal<long double>(s) * w;
-      }
+  for (auto& p : pk.points) project_inside(p, 2);
   pk.d = min_pair_distance(pk.points, pk.d > 0 ? 1.5L * pk.d : 1);
   if (!std::isfinite(pk.d) || !(pk.d > 0)) return false;
   const long double d_start = pk.d;
@@ -280,111 +275,103 @@ int precise_digits(const Analysis& a) {
   return std::max(40, 2 * e + 20);
 }
 
-void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
-                   std::string reason) {
-  const auto t0 = Clock::now();
-  PreciseStage st;
-  st.reason = std::move(reason);
-  // The deep relax: relax's LP steps on to long double's resolution. Relax stops once a step
-  // gains less than 1e-13 relative; a contact whose force is 1e-10 then can still stand 1e-7 d
-  // open, where a true gap is 1e-11 d, and no candidate set is right (build --n 188: every disk
-  // a rattler). Not above lp_limit disks (its LPs do not scale).
-  // From the analysis' input: the double path's result has its rattlers centred in their cages,
-  // and where it called every disk a rattler that moved every disk.
-  Packing start = a.pattern.packing;
-  std::vector<Bond> loaded = a.relax.active;
-  if (start.size() <= o.lp_limit) {
-    tell(o.progress, "multiprecision certificate: deep relax (LP steps)", 0, start.d);
-    RelaxOptions deep;
-    deep.stationary = 1e-18L;
-    deep.min_trust = 1e-19L;
-    if (o.progress)
-      deep.on_step = [&](int step, long double d) {
-        tell(o.progress, "multiprecision certificate: deep relax (LP steps)", step, d);
-      };
-    Packing moved = input;
-    st.deep_relax = timed(st.deep_relax_seconds, [&] { return relax_packing(moved, deep); });
-    st.deep_relaxed = true;
-    // Relax never lowers d below its start; keep its result (and its loaded contacts) unless the
-    // double path ended higher.
-    if (moved.d >= start.d) {
-      start = std::move(moved);
-      loaded = st.deep_relax.active;
-    }
+// The deep relax: relax's LP steps on to long double's resolution. Relax stops once a step
+// gains less than 1e-13 relative; a contact whose force is 1e-10 then can still stand 1e-7 d
+// open, where a true gap is 1e-11 d, and no candidate set is right (build --n 188: every disk a
+// rattler). From the analysis' input: the double path's result has its rattlers centred in their
+// cages, and where it called every disk a rattler that moved every disk. `start` and `loaded`
+// become its result and its loaded contacts unless the double path ended higher.
+void deep_relax(PreciseStage& st, Packing& start, std::vector<Bond>& loaded, const Packing& input,
+                const AnalysisOptions& o) {
+  tell(o.progress, "multiprecision certificate: deep relax (LP steps)", 0, start.d);
+  RelaxOptions deep;
+  deep.stationary = 1e-18L;
+  deep.min_trust = 1e-19L;
+  if (o.progress)
+    deep.on_step = [&](int step, long double d) {
+      tell(o.progress, "multiprecision certificate: deep relax (LP steps)", step, d);
+    };
+  Packing moved = input;
+  st.deep_relax = timed(st.deep_relax_seconds, [&] { return relax_packing(moved, deep); });
+  st.deep_relaxed = true;
+  // Relax never lowers d below its start; keep its result (and its loaded contacts) unless the
+  // double path ended higher.
+  if (moved.d >= start.d) {
+    start = std::move(moved);
+    loaded = st.deep_relax.active;
   }
-  // Candidates: the double path's bonds, the relaxes' loaded contacts, the builder's bonds, and
-  // (in identify_bonds_multiprecision) every contact within 1e-6 d, the double path's own
-  // threshold.
-  std::vector<Bond> hints = a.pattern.bonds;
-  hints.insert(hints.end(), a.relax.active.begin(), a.relax.active.end());
-  hints.insert(hints.end(), loaded.begin(), loaded.end());
-  if (o.reference_bonds)
-    hints.insert(hints.end(), o.reference_bonds->begin(), o.reference_bonds->end());
-  // The state's own contacts: the gaps below the widest jump (ratio) between consecutive gaps
-  // under 1e-6 d. Gaps below long double's resolution of a distance (coordinates to ~1e-19,
-  // divided by d) count as that resolution: their ratios mean nothing. After the deep relax the
-  // jump is clean where the packing has settled (sparse-rows k = 10: 1.2e-18 d, then 2.1e-8 d).
+}
+
+// The state's own contacts: the gaps below the widest jump (ratio) between consecutive gaps
+// under 1e-6 d, sorted; st's contacts, contact_gap and next_gap say where the jump is. Gaps below
+// long double's resolution of a distance (coordinates to ~1e-19, divided by d) count as that
+// resolution: their ratios mean nothing. After the deep relax the jump is clean where the packing
+// has settled (sparse-rows k = 10: 1.2e-18 d, then 2.1e-8 d).
+std::vector<Bond> state_contacts(PreciseStage& st, const Packing& start) {
   std::vector<Bond> contacts;
-  {
-    const auto all = smallest_gaps(start, {}, SIZE_MAX);
-    const long double resolution = 64 * std::numeric_limits<long double>::epsilon() / start.d;
-    auto positive = [&](long double g) { return std::max(g, resolution); };
-    std::size_t cut = 0;
-    long double jump = 0;
-    for (std::size_t k = 1; k < all.size() && all[k - 1].gap < 1e-6L; ++k) {
-      const long double ratio = positive(all[k].gap) / positive(all[k - 1].gap);
-      if (ratio > jump) {
-        jump = ratio;
-        cut = k;
-      }
-    }
-    for (std::size_t k = 0; k < cut; ++k) contacts.push_back(all[k].contact);
-    std::sort(contacts.begin(), contacts.end());
-    if (cut > 0) {
-      st.contacts = static_cast<int>(cut);
-      st.contact_gap = all[cut - 1].gap;
-      st.next_gap = all[cut].gap;
+  const auto all = smallest_gaps(start, {}, SIZE_MAX);
+  const long double resolution = 64 * std::numeric_limits<long double>::epsilon() / start.d;
+  auto positive = [&](long double g) { return std::max(g, resolution); };
+  std::size_t cut = 0;
+  long double jump = 0;
+  for (std::size_t k = 1; k < all.size() && all[k - 1].gap < 1e-6L; ++k) {
+    const long double ratio = positive(all[k].gap) / positive(all[k - 1].gap);
+    if (ratio > jump) {
+      jump = ratio;
+      cut = k;
     }
   }
-  const int first = precise_digits(a);
-  // One identification and certificate; false when more digits could not help.
-  auto attempt = [&](PreciseStage& t, const std::vector<Bond>& from, long double threshold,
-                     DropRule rule) {
-    tell(o.progress, fmt::format("multiprecision certificate ({} digits)", t.digits), 0, start.d);
-    t.identification = identify_bonds_multiprecision(start, from, threshold, t.digits, rule);
-    const auto& id = t.identification;
-    if (!id.found) {
-      t.declined = id.failure;
-      return false;
+  for (std::size_t k = 0; k < cut; ++k) contacts.push_back(all[k].contact);
+  std::sort(contacts.begin(), contacts.end());
+  if (cut > 0) {
+    st.contacts = static_cast<int>(cut);
+    st.contact_gap = all[cut - 1].gap;
+    st.next_gap = all[cut].gap;
+  }
+  return contacts;
+}
+
+// One identification and certificate at t.digits; false when more digits could not help.
+bool attempt_certificate(PreciseStage& t, const Packing& start, const std::vector<Bond>& from,
+                         long double threshold, DropRule rule, const ProgressFn& progress) {
+  tell(progress, fmt::format("multiprecision certificate ({} digits)", t.digits), 0, start.d);
+  t.identification = identify_bonds_multiprecision(start, from, threshold, t.digits, rule);
+  const auto& id = t.identification;
+  if (!id.found) {
+    t.declined = id.failure;
+    return false;
+  }
+  t.gap_floor = std::max(std::pow(10.0L, -static_cast<long double>(t.digits)), id.gaps.bond_floor);
+  t.smallest_gap = std::numeric_limits<long double>::infinity();
+  for (const auto& g : id.gaps.gaps)
+    if (!g.rattler) {
+      t.smallest_gap = g.gap;
+      t.smallest_gap_contact = g.contact;
+      break;
     }
-    t.gap_floor =
-        std::max(std::pow(10.0L, -static_cast<long double>(t.digits)), id.gaps.bond_floor);
-    t.smallest_gap = std::numeric_limits<long double>::infinity();
-    for (const auto& g : id.gaps.gaps)
-      if (!g.rattler) {
-        t.smallest_gap = g.gap;
-        t.smallest_gap_contact = g.contact;
-        break;
-      }
-    t.certificate = multiprecision_certificate(id.polish, id.bonds, id.rattlers);
-    // A gap is resolved when it stands half the working digits above the floor (1e-11 d against
-    // a floor of 1e-42 at 42 digits: 31 orders).
-    const long double resolved = t.gap_floor * std::pow(10.0L, t.digits / 2.0L);
-    const bool gaps_resolved = t.smallest_gap > resolved;
-    const bool cages = !(id.rattler_clearance < -t.gap_floor);
-    t.certified = t.certificate.certified() && gaps_resolved && cages;
-    if (t.certified) return false;
-    t.declined = !cages ? "a rattler has no room in its cage"
-                 : !t.certificate.certified()
-                     ? t.certificate.declined
-                     : fmt::format(
-                           "the smallest non-bond gap, {:.3Lg} d, is not resolved "
-                           "above {:.2Lg} d",
-                           t.smallest_gap, resolved);
-    return cages && (!gaps_resolved || (t.certificate.rigid && !t.certificate.strictly_positive));
-  };
-  // Both drop rules (analysis/bonds.hpp), then twice the digits if precision was short. The
-  // report keeps the certified attempt, else the last that found bonds, else the last.
+  t.certificate = multiprecision_certificate(id.polish, id.bonds, id.rattlers);
+  // A gap is resolved when it stands half the working digits above the floor (1e-11 d against
+  // a floor of 1e-42 at 42 digits: 31 orders).
+  const long double resolved = t.gap_floor * std::pow(10.0L, t.digits / 2.0L);
+  const bool gaps_resolved = t.smallest_gap > resolved;
+  const bool cages = !(id.rattler_clearance < -t.gap_floor);
+  t.certified = t.certificate.certified() && gaps_resolved && cages;
+  if (t.certified) return false;
+  t.declined = !cages ? "a rattler has no room in its cage"
+               : !t.certificate.certified()
+                   ? t.certificate.declined
+                   : fmt::format(
+                         "the smallest non-bond gap, {:.3Lg} d, is not resolved "
+                         "above {:.2Lg} d",
+                         t.smallest_gap, resolved);
+  return cages && (!gaps_resolved || (t.certificate.rigid && !t.certificate.strictly_positive));
+}
+
+// Both drop rules (analysis/bonds.hpp), then twice the digits if precision was short. Keeps the
+// certified attempt, else the last that found bonds, else the last (each a copy of st).
+PreciseStage kept_attempt(const PreciseStage& st, const Packing& start,
+                          const std::vector<Bond>& hints, const std::vector<Bond>& contacts,
+                          int first, const ProgressFn& progress) {
   std::optional<PreciseStage> kept;
   for (int round = 0; round < 2 && !(kept && kept->certified); ++round) {
     bool short_of_digits = false;
@@ -395,8 +382,9 @@ void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
       t.attempts = round + 1;
       t.digits = round == 0 ? first : 2 * first;
       const bool more =
-          way < 2 ? attempt(t, hints, 1e-6L, way == 0 ? DropRule::Widest : DropRule::Stretched)
-                  : attempt(t, contacts, 0, DropRule::Widest);
+          way < 2 ? attempt_certificate(t, start, hints, 1e-6L,
+                                        way == 0 ? DropRule::Widest : DropRule::Stretched, progress)
+                  : attempt_certificate(t, start, contacts, 0, DropRule::Widest, progress);
       short_of_digits = more || short_of_digits;
       if (!kept || t.certified || t.identification.found || !kept->identification.found)
         kept = std::move(t);
@@ -404,48 +392,77 @@ void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
     }
     if (!short_of_digits) break;
   }
-  st = std::move(*kept);
-  if (!st.identification.found && st.contacts > 0) {
-    std::vector<Bond> held = contacts;
-    const auto rattlers = find_rattlers(start, held);
-    st.declined = fmt::format(
-        "{} contacts within {:.2Lg} d (the next gap {:.2Lg} d){}; {}", st.contacts, st.contact_gap,
-        st.next_gap,
-        st.deep_relax.converged ? ", first-order stationary (no LP step gains 1e-18)"
-        : st.deep_relaxed       ? ""
-                                : fmt::format(" (no deep relax above {} disks)", o.lp_limit),
-        held.empty()
-            ? std::string("with them every disk is a rattler by the surround test: not jammed "
-                          "at first order") +
-                  (st.deep_relax.converged
-                       ? " (a degenerate maximum no first-order certificate covers)"
-                       : "")
-            : fmt::format("with them {} rattlers, but no bond set with a solution: {}",
-                          rattlers.size(), st.identification.failure));
-  }
+  return std::move(*kept);
+}
 
-  if (st.certified) {
-    auto& id = st.identification;
-    if (o.reference_bonds) {
-      st.reference_open = 0;
-      for (const Bond& b : *o.reference_bonds)
-        if (!std::binary_search(id.bonds.begin(), id.bonds.end(), b) &&
-            !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.a) &&
-            (b.is_wall() || !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.b)))
-          ++st.reference_open;
-    }
-    a.pattern.packing = rounded_packing(id.polish);
-    a.pattern.bonds = id.bonds;
-    a.pattern.rattlers = id.rattlers;
-    a.rigidity = {};
-    a.rigidity.rigid = true;
-    a.stress = st.certificate.stress;
-    a.gaps.clear();
-    for (const auto& g : id.gaps.gaps) {
-      if (a.gaps.size() == 64) break;
-      a.gaps.push_back({g.contact, g.gap, g.rattler});
-    }
+// Why no bond set was found, from the state's own contacts (st.contacts > 0).
+std::string no_bond_set_reason(const PreciseStage& st, const Packing& start,
+                               const std::vector<Bond>& contacts, std::size_t lp_limit) {
+  std::vector<Bond> held = contacts;
+  const auto rattlers = find_rattlers(start, held);
+  return fmt::format(
+      "{} contacts within {:.2Lg} d (the next gap {:.2Lg} d){}; {}", st.contacts, st.contact_gap,
+      st.next_gap,
+      st.deep_relax.converged ? ", first-order stationary (no LP step gains 1e-18)"
+      : st.deep_relaxed       ? ""
+                              : fmt::format(" (no deep relax above {} disks)", lp_limit),
+      held.empty()
+          ? std::string("with them every disk is a rattler by the surround test: not jammed "
+                        "at first order") +
+                (st.deep_relax.converged
+                     ? " (a degenerate maximum no first-order certificate covers)"
+                     : "")
+          : fmt::format("with them {} rattlers, but no bond set with a solution: {}",
+                        rattlers.size(), st.identification.failure));
+}
+
+// The certified configuration replaces the double path's: packing, bonds, rattlers, stress and
+// the 64 smallest gaps; st counts the reference bonds it leaves open.
+void adopt_certified(Analysis& a, PreciseStage& st, const AnalysisOptions& o) {
+  auto& id = st.identification;
+  if (o.reference_bonds) {
+    st.reference_open = 0;
+    for (const Bond& b : *o.reference_bonds)
+      if (!std::binary_search(id.bonds.begin(), id.bonds.end(), b) &&
+          !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.a) &&
+          (b.is_wall() || !std::binary_search(id.rattlers.begin(), id.rattlers.end(), b.b)))
+        ++st.reference_open;
   }
+  a.pattern.packing = rounded_packing(id.polish);
+  a.pattern.bonds = id.bonds;
+  a.pattern.rattlers = id.rattlers;
+  a.rigidity = {};
+  a.rigidity.rigid = true;
+  a.stress = st.certificate.stress;
+  a.gaps.clear();
+  for (const auto& g : id.gaps.gaps) {
+    if (a.gaps.size() == 64) break;
+    a.gaps.push_back({g.contact, g.gap, g.rattler});
+  }
+}
+
+void precise_stage(Analysis& a, const Packing& input, const AnalysisOptions& o,
+                   std::string reason) {
+  const auto t0 = Clock::now();
+  PreciseStage st;
+  st.reason = std::move(reason);
+  // The deep relax first, not above lp_limit disks (its LPs do not scale).
+  Packing start = a.pattern.packing;
+  std::vector<Bond> loaded = a.relax.active;
+  if (start.size() <= o.lp_limit) deep_relax(st, start, loaded, input, o);
+  // Candidates: the double path's bonds, the relaxes' loaded contacts, the builder's bonds, and
+  // (in identify_bonds_multiprecision) every contact within 1e-6 d, the double path's own
+  // threshold.
+  std::vector<Bond> hints = a.pattern.bonds;
+  hints.insert(hints.end(), a.relax.active.begin(), a.relax.active.end());
+  hints.insert(hints.end(), loaded.begin(), loaded.end());
+  if (o.reference_bonds)
+    hints.insert(hints.end(), o.reference_bonds->begin(), o.reference_bonds->end());
+  const std::vector<Bond> contacts = state_contacts(st, start);
+  st = kept_attempt(st, start, hints, contacts, precise_digits(a), o.progress);
+  if (!st.identification.found && st.contacts > 0)
+    st.declined = no_bond_set_reason(st, start, contacts, o.lp_limit);
+  if (st.certified) adopt_certified(a, st, o);
   st.seconds = seconds_since(t0);
   a.times.certificate_mp = st.seconds;
   a.precise = std::move(st);

@@ -500,6 +500,49 @@ std::string fixed(mpfr_srcptr v, int decimals) {
   return s;
 }
 
+// trial = s - dz on the unknowns; rattlers are copied unchanged.
+void newton_trial(State& trial, const State& s, const std::vector<Mp>& dz,
+                  const bond_system::Layout& lay) {
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    const int c = lay.column[i];
+    if (c < 0) {
+      mpfr_set(trial.x[i].get(), s.x[i].get(), kRnd);
+      mpfr_set(trial.y[i].get(), s.y[i].get(), kRnd);
+      continue;
+    }
+    mpfr_sub(trial.x[i].get(), s.x[i].get(), dz[static_cast<std::size_t>(c)].get(), kRnd);
+    mpfr_sub(trial.y[i].get(), s.y[i].get(), dz[static_cast<std::size_t>(c) + 1].get(), kRnd);
+  }
+  mpfr_sub(trial.L.get(), s.L.get(), dz[static_cast<std::size_t>(lay.l_column)].get(), kRnd);
+}
+
+// The converged state into out: d and L to `digits` significant digits, the centres in the unit
+// triangle with `digits` decimals.
+void write_solution(MultiprecisionPolish& out, const State& s, const Packing& start,
+                    const std::vector<int>& rattlers, int digits, mpfr_prec_t prec) {
+  const std::size_t n = s.x.size();
+  Mp d(prec), t(prec);
+  mpfr_ui_div(d.get(), 1, s.L.get(), kRnd);
+  out.d = significant(d.get(), digits);
+  out.L = significant(s.L.get(), digits);
+  // Rattlers keep their start coordinates in the unit triangle, as in polish_bond_system.
+  std::vector<char> is_rattler(n, 0);
+  for (int i : rattlers) is_rattler[static_cast<std::size_t>(i)] = 1;
+  out.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int c = 0; c < 2; ++c) {
+      if (is_rattler[i]) {
+        mpfr_set_ld(t.get(), c == 0 ? start.points[i].x : start.points[i].y, kRnd);
+      } else {
+        // x d rather than x / L: a product costs a third of a quotient, and the 10 guard digits
+        // absorb the extra rounding.
+        mpfr_mul(t.get(), (c == 0 ? s.x[i] : s.y[i]).get(), d.get(), kRnd);
+      }
+      out.points[i][static_cast<std::size_t>(c)] = fixed(t.get(), digits);
+    }
+  }
+}
+
 }  // namespace
 
 MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vector<Bond>& bonds,
@@ -555,7 +598,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
   std::vector<Mp> r(bonds.size(), Mp(r_bits)), r_trial(bonds.size(), Mp(r_bits));
   // Magnitudes and thresholds to 64 bits: only compared (exp10 and log10 at the working
   // precision would cost more than a Newton step).
-  Mp max_abs(64), max_trial(64), tol(64), target(64), small(64), t(prec);
+  Mp max_abs(64), max_trial(64), tol(64), target(64), small(64);
   residuals(bonds, s, w, r, max_abs);
   // Converged below 10^-(digits+3) L; iterate on towards 10^-(digits+8) L (cheap) so that the
   // digits reported are right even when the unknowns are a few orders worse than the residual.
@@ -565,6 +608,11 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
     mpfr_mul(v.get(), v.get(), s.L.get(), kRnd);
   };
   scaled_power(target, -(digits + 8));
+  auto residuals_at_working_precision = [&] {
+    w.set_prec(prec, exact_bits(s, prec));
+    for (Mp& v : r) v.reset(prec);
+    residuals(bonds, s, w, r, max_abs);
+  };
 
   Eigen::SPQR<bond_system::SpMat> qr;
   FixedJacobian J(bonds, lay);
@@ -579,9 +627,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
       if (r_bits == prec) break;
       // Below the target at a precision too low to tell: evaluate at the working precision.
       r_bits = prec;
-      w.set_prec(prec, exact_bits(s, prec));
-      for (Mp& v : r) v.reset(prec);
-      residuals(bonds, s, w, r, max_abs);
+      residuals_at_working_precision();
       continue;
     }
     if (out.factorizations == 0) {
@@ -599,18 +645,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
     const auto q = static_cast<mpfr_prec_t>(std::clamp<mpfr_exp_t>(e - tau + 40, 64, prec));
     J.evaluate(bonds, s, r, e, q);
     out.sweeps += refine(J, qr, r, tau, dz, rd, static_cast<int>(e - tau) + 20, gain);
-    // trial = s - dz on the unknowns; rattlers are copied unchanged.
-    for (std::size_t i = 0; i < n; ++i) {
-      const int c = lay.column[i];
-      if (c < 0) {
-        mpfr_set(trial.x[i].get(), s.x[i].get(), kRnd);
-        mpfr_set(trial.y[i].get(), s.y[i].get(), kRnd);
-        continue;
-      }
-      mpfr_sub(trial.x[i].get(), s.x[i].get(), dz[static_cast<std::size_t>(c)].get(), kRnd);
-      mpfr_sub(trial.y[i].get(), s.y[i].get(), dz[static_cast<std::size_t>(c) + 1].get(), kRnd);
-    }
-    mpfr_sub(trial.L.get(), s.L.get(), dz[static_cast<std::size_t>(lay.l_column)].get(), kRnd);
+    newton_trial(trial, s, dz, lay);
     const mpfr_prec_t next_bits = residual_bits(e);
     w.set_prec(next_bits, exact_bits(trial, next_bits));
     for (Mp& v : r_trial) v.reset(next_bits);
@@ -628,11 +663,8 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
     }
     if (!progress) break;
   }
-  if (!bonds.empty() && r_bits < prec) {  // stopped early: the verdict at the working precision
-    w.set_prec(prec, exact_bits(s, prec));
-    for (Mp& v : r) v.reset(prec);
-    residuals(bonds, s, w, r, max_abs);
-  }
+  // Stopped early: the verdict at the working precision.
+  if (!bonds.empty() && r_bits < prec) residuals_at_working_precision();
 
   scaled_power(tol, -(digits + 3));
   out.converged = mpfr_cmp(max_abs.get(), tol.get()) <= 0;
@@ -640,28 +672,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
   mpfr_max(small.get(), small.get(), max_abs.get(), kRnd);
   mpfr_log10(small.get(), small.get(), kRnd);
   out.log10_max_residual = mpfr_get_d(small.get(), kRnd);
-  if (!out.converged) return out;
-
-  Mp d(prec);
-  mpfr_ui_div(d.get(), 1, s.L.get(), kRnd);
-  out.d = significant(d.get(), digits);
-  out.L = significant(s.L.get(), digits);
-  // Rattlers keep their start coordinates in the unit triangle, as in polish_bond_system.
-  std::vector<char> is_rattler(n, 0);
-  for (int i : rattlers) is_rattler[static_cast<std::size_t>(i)] = 1;
-  out.points.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int c = 0; c < 2; ++c) {
-      if (is_rattler[i]) {
-        mpfr_set_ld(t.get(), c == 0 ? start.points[i].x : start.points[i].y, kRnd);
-      } else {
-        // x d rather than x / L: a product costs a third of a quotient, and the 10 guard digits
-        // absorb the extra rounding.
-        mpfr_mul(t.get(), (c == 0 ? s.x[i] : s.y[i]).get(), d.get(), kRnd);
-      }
-      out.points[i][static_cast<std::size_t>(c)] = fixed(t.get(), digits);
-    }
-  }
+  if (out.converged) write_solution(out, s, start, rattlers, digits, prec);
   return out;
 }
 
@@ -890,16 +901,19 @@ struct ReadBack {
     mpfr_div_2ui(t.get(), y[i].get(), 1, kRnd);
     mpfr_sub(out.get(), out.get(), t.get(), kRnd);
   }
+  // Centre a minus centre c into (dx, dy), its length into length.
+  void difference(std::size_t a, std::size_t c, Mp& dx, Mp& dy, Mp& length) const {
+    mpfr_sub(dx.get(), x[a].get(), x[c].get(), kRnd);
+    mpfr_sub(dy.get(), y[a].get(), y[c].get(), kRnd);
+    mpfr_hypot(length.get(), dx.get(), dy.get(), kRnd);
+  }
   // Gap of bond b in units of d into out.
   void gap(const Bond& b, Mp& out, Mp& t, Mp& u) const {
     const auto a = static_cast<std::size_t>(b.a);
     if (b.is_wall()) {
       wall(a, b.side(), out, t);
     } else {
-      const auto c = static_cast<std::size_t>(b.b);
-      mpfr_sub(t.get(), x[a].get(), x[c].get(), kRnd);
-      mpfr_sub(u.get(), y[a].get(), y[c].get(), kRnd);
-      mpfr_hypot(out.get(), t.get(), u.get(), kRnd);
+      difference(a, static_cast<std::size_t>(b.b), t, u, out);
       mpfr_sub(out.get(), out.get(), d.get(), kRnd);
     }
     mpfr_div(out.get(), out.get(), d.get(), kRnd);
@@ -923,10 +937,7 @@ struct ReadBack {
       mpfr_set_si_2exp(uy.get(), -1, -1, kRnd);
       return;
     }
-    const auto c = static_cast<std::size_t>(b.b);
-    mpfr_sub(ux.get(), x[a].get(), x[c].get(), kRnd);
-    mpfr_sub(uy.get(), y[a].get(), y[c].get(), kRnd);
-    mpfr_hypot(t.get(), ux.get(), uy.get(), kRnd);
+    difference(a, static_cast<std::size_t>(b.b), ux, uy, t);
     mpfr_div(ux.get(), ux.get(), t.get(), kRnd);
     mpfr_div(uy.get(), uy.get(), t.get(), kRnd);
   }

@@ -271,6 +271,163 @@ std::string join_plot(const std::vector<std::string>& clauses) {
   return s + "\n";
 }
 
+// How to remake the pictures by hand, after a script's title line; the caller ends the sentence.
+std::string rerun_note(const std::string& name) {
+  return fmt::format(
+      "# Written by tripack. Rerun it in this directory, `gnuplot {0}.gp`, to remake\n"
+      "# {0}.svg, .png and .pdf from {0}.csv after restyling (a run by hand\n"
+      "# stamps the PDF with the current date; tripack's own run stamps 1970-01-01",
+      name);
+}
+
+// The data file NAME.csv, comma-separated, as the script's variable `data`.
+std::string data_settings(const std::string& name) {
+  return "set encoding utf8\nset datafile separator comma\ndata = " + gp_string(name + ".csv") +
+         "\n";
+}
+
+// The delta plot's data: rows grouped by class (classless last), constructed before billiards,
+// then by n, so that each class line joins one contiguous block (see the script's comment).
+std::string delta_csv(const std::vector<DeltaPoint>& points,
+                      const std::vector<std::string>& classes) {
+  std::map<std::string, std::size_t> rank;
+  for (std::size_t i = 0; i < classes.size(); ++i) rank[classes[i]] = i;
+  rank[""] = classes.size();
+  std::vector<DeltaPoint> rows = points;
+  std::stable_sort(rows.begin(), rows.end(), [&](const DeltaPoint& a, const DeltaPoint& b) {
+    return std::tuple(rank.at(a.class_id), a.billiards, a.atlas, a.n) <
+           std::tuple(rank.at(b.class_id), b.billiards, b.atlas, b.n);
+  });
+  std::string csv = "n,delta,class,class_no,proven,billiards,atlas\n";
+  for (const auto& r : rows) {
+    const std::size_t class_no = r.class_id.empty() ? 0 : rank.at(r.class_id) + 1;
+    csv += fmt::format("{},{},{},{},{},{},{}\n", r.n, r.delta, csv_field(r.class_id), class_no,
+                       int(r.proven), int(r.billiards), int(r.atlas));
+  }
+  return csv;
+}
+
+// What the delta plot spans (the limit line always inside) and which marker kinds it draws.
+struct DeltaExtent {
+  double n_lo = 0, n_hi = 0, y_lo = 0, y_hi = 0;
+  bool classless = false, billiards = false, proven = false, atlas = false;
+};
+
+DeltaExtent delta_extent(const std::vector<DeltaPoint>& points) {
+  DeltaExtent e;
+  e.n_lo = e.n_hi = double(points[0].n);
+  e.y_hi = std::sqrt(3.0) - 1.5;
+  for (const auto& p : points) {
+    e.n_lo = std::min(e.n_lo, double(p.n));
+    e.n_hi = std::max(e.n_hi, double(p.n));
+    e.y_lo = std::min(e.y_lo, p.delta);
+    e.y_hi = std::max(e.y_hi, p.delta);
+    e.classless = e.classless || (p.class_id.empty() && !p.atlas);
+    e.billiards = e.billiards || p.billiards;
+    e.atlas = e.atlas || p.atlas;
+    e.proven = e.proven || p.proven;
+  }
+  return e;
+}
+
+// The plot command's clauses, each with its key entry: the class lines, then the markers, the
+// atlas's grey dots last (on top of the squares, crosses and rings), then the limit line.
+std::vector<std::string> delta_clauses(bool has_classes, const DeltaExtent& e) {
+  std::vector<std::string> clauses;
+  if (has_classes) {
+    clauses.push_back(
+        "for [i=1:|classes|] data skip 1 using 1:($4 == i && $6 == 0 ? $2 : NaN) \\\n"
+        "       with linespoints ls i title classes[i]");
+  }
+  // Each marker kind drawn: its clause, in drawing order.
+  const std::pair<bool, const char*> markers[] = {
+      {e.classless,
+       "data skip 1 using 1:($4 == 0 && $7 == 0 ? $2 : NaN) with points ls 101 "
+       "title 'in no class: best found'"},
+      {e.billiards,
+       "data skip 1 using 1:($6 == 1 ? $2 : NaN) with points ls 102 "
+       "title 'best of the billiards runs'"},
+      {e.proven,
+       "data skip 1 using 1:($5 == 1 ? $2 : NaN) with points ls 103 title 'proven optimum'"},
+      {e.atlas,
+       "data skip 1 using 1:($7 == 1 ? $2 : NaN) with points ls 105 title 'atlas best known'"}};
+  for (const auto& [drawn, clause] : markers)
+    if (drawn) clauses.push_back(clause);
+  clauses.push_back("limit with lines ls 104 title 'limit of delta(4Delta(k))'");
+  return clauses;
+}
+
+// The delta plot's gnuplot script: as it reads, a few substitutions aside.
+std::string delta_script(const std::string& name, const std::vector<std::string>& classes,
+                         const DeltaExtent& e) {
+  std::string gp =
+      "# delta(n) = L(n) - t(n) against n, like Graham & Lubachevsky (1995), Fig. 6.1.\n" +
+      rerun_note(name) + " so its\n# files are the same bytes every time).\n#\n";
+  gp += fmt::format(
+      R"gp(# {name}.csv columns: 1 n, 2 delta, 3 class ('' = in no class), 4 class_no (its
+# index in `classes` below, 0 = in no class), 5 proven (1/0), 6 billiards (1/0), 7 atlas
+# (1/0: the best of data/atlas.csv, a grey dot). The
+# clauses filter on class_no, not on the name: gnuplot's strcol() cuts a quoted CSV field
+# at its first blank. Rows are sorted by class, constructed before billiards, then n, so
+# each class line joins one contiguous block of rows: the rows a clause filters out are
+# NaN, and a NaN between two members would break the line.
+#
+# Oler's bound: L(n) >= t(n) = (-3 + sqrt(8n+1))/2, so delta(n) >= 0, and 0 at n = Delta(k).
+# n is on a log scale: on a linear axis up to a few hundred, the n where most is known
+# (2..40: the proven optima and the classless n) would be squeezed into the left edge.
+
+)gp",
+      fmt::arg("name", name));
+  gp += data_settings(name);
+  if (!classes.empty()) gp += gp_array("classes", classes);
+  gp += "\n# One line style per class (colour, then dash pattern), dots at the members.\n";
+  for (std::size_t i = 0; i < classes.size(); ++i) gp += style_line(i, "pt 7 ps 0.6");
+  gp += R"gp(set style line 101 lc rgb 'black' pt 4 ps 1.2 lw 1   # n in no class: open square
+set style line 102 lc rgb '#b2182b' pt 2 ps 1.4 lw 1.5 # billiards best: cross
+set style line 103 lc rgb 'black' pt 6 ps 1.9 lw 1   # proven optimum: ring
+set style line 105 lc rgb '#737373' pt 7 ps 0.45      # atlas best: grey dot
+
+set title "Distance from Oler's bound\nt(n) = (-3 + sqrt(8n+1))/2,  L(n) = 1/d(n)"
+set xlabel 'n'
+set ylabel 'delta(n) = L(n) - t(n)'
+set logscale x
+)gp";
+  const double span = e.y_hi - e.y_lo;
+  gp += fmt::format("set xrange [{:.6g}:{:.6g}]\n", e.n_lo / 1.15, e.n_hi * 1.15);
+  gp += fmt::format("set yrange [{:.6g}:{:.6g}]\n", e.y_lo - 0.04 * span, e.y_hi + 0.06 * span);
+  gp += log_tics(e.n_lo / 1.15, e.n_hi * 1.15);
+  gp += "set grid xtics ytics lc rgb '#e0e0e0'\n";
+  // The key: one entry per class line and per marker kind drawn, and the limit line; below the
+  // graph, in columns. On the right in one column, 30 classes ran off the bottom of the picture,
+  // and with them the entries of the markers, listed last.
+  const std::size_t entries = classes.size() + std::size_t(e.classless) + std::size_t(e.billiards) +
+                              std::size_t(e.proven) + std::size_t(e.atlas) + 1;
+  const std::size_t key_rows = (entries + kKeyColumns - 1) / kKeyColumns;
+  const int height = kCanvasHeight + static_cast<int>(key_rows) * kKeyRowPixels + 20;
+  gp += fmt::format(
+      R"gp(# The key below the graph, in columns of at most {rows} entries (the canvas is
+# as much taller as they need); the graph ends at 88% of the width, the label naming
+# the limit line on the right axis sits right of it.
+set rmargin at screen 0.8833
+set key outside below center vertical maxrows {rows} Left reverse samplen 2 noenhanced width 2
+
+)gp",
+      fmt::arg("rows", key_rows));
+  gp +=
+      R"gp(# Both delta(4Delta(k)) and delta(2Delta(k+1)+2Delta(k)-1) tend to sqrt(3) - 3/2 (GL1995, sec. 6).
+# Its value is a tic label on the right axis, its meaning in the key (a label on the line
+# itself would sit on some class line sooner or later).
+limit = sqrt(3) - 1.5
+set link y2
+set y2tics ('sqrt(3) - 3/2' limit) tc rgb 'gray30'
+set style line 104 lc rgb 'gray40' dt 2 lw 1
+
+# Drawn in this order, each with its key entry: the class lines, then the markers, the
+# atlas's small grey dots last, on top of the squares, crosses and rings around them.
+)gp";
+  return gp + terminals(name, join_plot(delta_clauses(!classes.empty(), e)), height);
+}
+
 }  // namespace
 
 std::string find_gnuplot() {
@@ -301,135 +458,7 @@ void plot_delta(const std::vector<DeltaPoint>& points, const fs::path& dir,
   std::vector<std::string> classes = first_appearance(
       points, [](const DeltaPoint& p) -> const std::string& { return p.class_id; });
   classes.erase(std::remove(classes.begin(), classes.end(), ""), classes.end());
-
-  // Rows grouped by class (classless last), constructed before billiards, then by n: each class
-  // line joins one contiguous block (see the script's comment).
-  std::map<std::string, std::size_t> rank;
-  for (std::size_t i = 0; i < classes.size(); ++i) rank[classes[i]] = i;
-  rank[""] = classes.size();
-  std::vector<DeltaPoint> rows = points;
-  std::stable_sort(rows.begin(), rows.end(), [&](const DeltaPoint& a, const DeltaPoint& b) {
-    return std::tuple(rank.at(a.class_id), a.billiards, a.atlas, a.n) <
-           std::tuple(rank.at(b.class_id), b.billiards, b.atlas, b.n);
-  });
-  std::string csv = "n,delta,class,class_no,proven,billiards,atlas\n";
-  for (const auto& r : rows) {
-    const std::size_t class_no = r.class_id.empty() ? 0 : rank.at(r.class_id) + 1;
-    csv += fmt::format("{},{},{},{},{},{},{}\n", r.n, r.delta, csv_field(r.class_id), class_no,
-                       int(r.proven), int(r.billiards), int(r.atlas));
-  }
-
-  const double limit = std::sqrt(3.0) - 1.5;
-  double n_lo = points[0].n, n_hi = n_lo, y_lo = 0, y_hi = limit;
-  bool classless = false, billiards = false, proven = false, atlas = false;
-  for (const auto& p : points) {
-    n_lo = std::min(n_lo, double(p.n));
-    n_hi = std::max(n_hi, double(p.n));
-    y_lo = std::min(y_lo, p.delta);
-    y_hi = std::max(y_hi, p.delta);
-    classless = classless || (p.class_id.empty() && !p.atlas);
-    billiards = billiards || p.billiards;
-    atlas = atlas || p.atlas;
-    proven = proven || p.proven;
-  }
-  const double span = y_hi - y_lo;
-  const std::string data = gp_string(name + ".csv");
-
-  std::string gp;
-  gp += "# delta(n) = L(n) - t(n) against n, like Graham & Lubachevsky (1995), Fig. 6.1.\n";
-  gp += "# Written by tripack. Rerun it in this directory, `gnuplot " + name + ".gp`, to remake\n";
-  gp += "# " + name + ".svg, .png and .pdf from " + name + ".csv after restyling (a run by hand\n";
-  gp += "# stamps the PDF with the current date; tripack's own run stamps 1970-01-01 so its\n";
-  gp += "# files are the same bytes every time).\n#\n";
-  gp += "# " + name + ".csv columns: 1 n, 2 delta, 3 class ('' = in no class), 4 class_no (its\n";
-  gp +=
-      "# index in `classes` below, 0 = in no class), 5 proven (1/0), 6 billiards (1/0), 7 atlas\n";
-  gp += "# (1/0: the best of data/atlas.csv, a grey dot). The\n";
-  gp +=
-      "# clauses filter on class_no, not on the name: gnuplot's strcol() cuts a quoted CSV field\n";
-  gp +=
-      "# at its first blank. Rows are sorted by class, constructed before billiards, then n, so\n";
-  gp += "# each class line joins one contiguous block of rows: the rows a clause filters out are\n";
-  gp += "# NaN, and a NaN between two members would break the line.\n#\n";
-  gp +=
-      "# Oler's bound: L(n) >= t(n) = (-3 + sqrt(8n+1))/2, so delta(n) >= 0, and 0 at n = "
-      "Delta(k).\n";
-  gp += "# n is on a log scale: on a linear axis up to a few hundred, the n where most is known\n";
-  gp +=
-      "# (2..40: the proven optima and the classless n) would be squeezed into the left edge.\n\n";
-  gp += "set encoding utf8\nset datafile separator comma\n";
-  gp += "data = " + data + "\n";
-  if (!classes.empty()) gp += gp_array("classes", classes);
-  gp += "\n# One line style per class (colour, then dash pattern), dots at the members.\n";
-  for (std::size_t i = 0; i < classes.size(); ++i) gp += style_line(i, "pt 7 ps 0.6");
-  gp += "set style line 101 lc rgb 'black' pt 4 ps 1.2 lw 1   # n in no class: open square\n";
-  gp += "set style line 102 lc rgb '#b2182b' pt 2 ps 1.4 lw 1.5 # billiards best: cross\n";
-  gp += "set style line 103 lc rgb 'black' pt 6 ps 1.9 lw 1   # proven optimum: ring\n";
-  gp += "set style line 105 lc rgb '#737373' pt 7 ps 0.45      # atlas best: grey dot\n\n";
-  gp += "set title \"Distance from Oler's bound\\nt(n) = (-3 + sqrt(8n+1))/2,  L(n) = 1/d(n)\"\n";
-  gp += "set xlabel 'n'\nset ylabel 'delta(n) = L(n) - t(n)'\n";
-  gp += "set logscale x\n";
-  gp += fmt::format("set xrange [{:.6g}:{:.6g}]\n", n_lo / 1.15, n_hi * 1.15);
-  gp += fmt::format("set yrange [{:.6g}:{:.6g}]\n", y_lo - 0.04 * span, y_hi + 0.06 * span);
-  gp += log_tics(n_lo / 1.15, n_hi * 1.15);
-  gp += "set grid xtics ytics lc rgb '#e0e0e0'\n";
-  // The key: one entry per class line and per marker kind drawn, and the limit line; below the
-  // graph, in columns. On the right in one column, 30 classes ran off the bottom of the picture,
-  // and with them the entries of the markers, listed last.
-  const std::size_t entries = classes.size() + std::size_t(classless) + std::size_t(billiards) +
-                              std::size_t(proven) + std::size_t(atlas) + 1;
-  const std::size_t key_rows = (entries + kKeyColumns - 1) / kKeyColumns;
-  const int height = kCanvasHeight + static_cast<int>(key_rows) * kKeyRowPixels + 20;
-  gp += fmt::format("# The key below the graph, in columns of at most {} entries (the canvas is\n",
-                    key_rows);
-  gp += "# as much taller as they need); the graph ends at 88% of the width, the label naming\n";
-  gp += "# the limit line on the right axis sits right of it.\n";
-  gp += "set rmargin at screen 0.8833\n";
-  gp += fmt::format(
-      "set key outside below center vertical maxrows {} Left reverse samplen 2 noenhanced "
-      "width 2\n\n",
-      key_rows);
-  gp +=
-      "# Both delta(4Delta(k)) and delta(2Delta(k+1)+2Delta(k)-1) tend to sqrt(3) - 3/2 "
-      "(GL1995, sec. 6).\n";
-  gp +=
-      "# Its value is a tic label on the right axis, its meaning in the key (a label on the line\n";
-  gp += "# itself would sit on some class line sooner or later).\n";
-  gp += "limit = sqrt(3) - 1.5\n";
-  gp += "set link y2\n";
-  gp += "set y2tics ('sqrt(3) - 3/2' limit) tc rgb 'gray30'\n";
-  gp += "set style line 104 lc rgb 'gray40' dt 2 lw 1\n\n";
-  gp += "# Drawn in this order, each with its key entry: the class lines, then the markers, the\n";
-  gp += "# atlas's small grey dots last, on top of the squares, crosses and rings around them.\n";
-
-  std::vector<std::string> clauses;
-  if (!classes.empty()) {
-    clauses.push_back(
-        "for [i=1:|classes|] data skip 1 using 1:($4 == i && $6 == 0 ? $2 : NaN) \\\n"
-        "       with linespoints ls i title classes[i]");
-  }
-  if (classless) {
-    clauses.push_back(
-        "data skip 1 using 1:($4 == 0 && $7 == 0 ? $2 : NaN) with points ls 101 "
-        "title 'in no class: best found'");
-  }
-  if (billiards) {
-    clauses.push_back(
-        "data skip 1 using 1:($6 == 1 ? $2 : NaN) with points ls 102 "
-        "title 'best of the billiards runs'");
-  }
-  if (proven) {
-    clauses.push_back(
-        "data skip 1 using 1:($5 == 1 ? $2 : NaN) with points ls 103 "
-        "title 'proven optimum'");
-  }
-  if (atlas) {
-    clauses.push_back(
-        "data skip 1 using 1:($7 == 1 ? $2 : NaN) with points ls 105 title 'atlas best known'");
-  }
-  clauses.push_back("limit with lines ls 104 title 'limit of delta(4Delta(k))'");
-  gp += terminals(name, join_plot(clauses), height);
-  render(dir, name, csv, gp);
+  render(dir, name, delta_csv(points, classes), delta_script(name, classes, delta_extent(points)));
 }
 
 void plot_accuracy(const std::vector<AccuracyPoint>& points, const fs::path& dir,
@@ -461,29 +490,36 @@ void plot_accuracy(const std::vector<AccuracyPoint>& points, const fs::path& dir
                        r.digits);
   }
 
-  std::string gp;
-  gp += "# Accuracy against time: correct significant digits reached against wall time.\n";
-  gp += "# Written by tripack. Rerun it in this directory, `gnuplot " + name + ".gp`, to remake\n";
-  gp += "# " + name + ".svg, .png and .pdf from " + name + ".csv after restyling (a run by hand\n";
-  gp += "# stamps the PDF with the current date; tripack's own run stamps 1970-01-01).\n#\n";
-  gp += "# " + name + ".csv columns: 1 series, 2 series_no (its index in `series` below: the\n";
-  gp += "# filter, as gnuplot's strcol() cuts a quoted CSV field at its first blank), 3 seconds,\n";
-  gp += "# 4 digits. Rows are sorted by series, then seconds, so each series' line joins one\n";
-  gp += "# contiguous block of rows (the rows a clause filters out are NaN). Seconds <= 0 cannot\n";
-  gp += "# sit on the log axis: NaN too.\n\n";
-  gp += "set encoding utf8\nset datafile separator comma\n";
-  gp += "data = " + gp_string(name + ".csv") + "\n";
+  std::string gp =
+      "# Accuracy against time: correct significant digits reached against wall time.\n" +
+      rerun_note(name) + ").\n#\n";
+  gp +=
+      fmt::format(R"gp(# {name}.csv columns: 1 series, 2 series_no (its index in `series` below: the
+# filter, as gnuplot's strcol() cuts a quoted CSV field at its first blank), 3 seconds,
+# 4 digits. Rows are sorted by series, then seconds, so each series' line joins one
+# contiguous block of rows (the rows a clause filters out are NaN). Seconds <= 0 cannot
+# sit on the log axis: NaN too.
+
+)gp",
+                  fmt::arg("name", name));
+  gp += data_settings(name);
   gp += gp_array("series", series);
   gp += "\n# One line style per series (colour, then dash pattern; point types cycle).\n";
   for (std::size_t i = 0; i < series.size(); ++i) {
     gp += style_line(i, fmt::format("pt {} ps 1.0", std::array{7, 5, 9, 13, 11}[i % 5]));
   }
-  gp += "\nset title 'Accuracy costs time'\n";
-  gp += "set xlabel 'wall time (s)'\nset ylabel 'correct significant digits'\n";
-  gp += "set logscale x\nset format x '10^{%L}'\n";
-  gp += "set yrange [0:*]\nset offsets 0, 0, graph 0.05, 0  # room above the top point\n";
-  gp += "set grid xtics ytics lc rgb '#e0e0e0'\n";
-  gp += "set key outside right top Left reverse noenhanced\n\n";
+  gp += R"gp(
+set title 'Accuracy costs time'
+set xlabel 'wall time (s)'
+set ylabel 'correct significant digits'
+set logscale x
+set format x '10^{%L}'
+set yrange [0:*]
+set offsets 0, 0, graph 0.05, 0  # room above the top point
+set grid xtics ytics lc rgb '#e0e0e0'
+set key outside right top Left reverse noenhanced
+
+)gp";
   gp += terminals(name, join_plot({"for [i=1:|series|] data skip 1 using ($3 > 0 ? $3 : NaN):"
                                    "($2 == i ? $4 : NaN) \\\n"
                                    "       with linespoints ls i title series[i]"}));

@@ -26,6 +26,15 @@ inline void check_keys(const YAML::Node& node, const std::set<std::string>& allo
   }
 }
 
+// An effect's options: a bare `name:` (null) keeps every default, else a map of `allowed` keys.
+// True when there are options to read.
+inline bool has_options(const YAML::Node& node, const std::set<std::string>& allowed,
+                        const std::string& where) {
+  if (node.IsNull()) return false;
+  check_keys(node, allowed, where);
+  return true;
+}
+
 template <class T>
 T scalar(const YAML::Node& node, const std::string& name) {
   if (!node.IsScalar()) scene_error(name + " must be a number");

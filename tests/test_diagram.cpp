@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <memory>
 #include <numbers>
 #include <ostream>
 #include <regex>
@@ -22,6 +23,7 @@
 
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
+#include "one_line_error.hpp"
 #include "pipeline/analyze.hpp"
 #include "report/diagram.hpp"
 
@@ -132,6 +134,13 @@ class Image {
   cairo_surface_t* surface_;
 };
 
+// The diagram drawn as a PNG at `path` and decoded.
+std::unique_ptr<Image> drawn_png(const Diagram& diagram, const std::string& path,
+                                 const DiagramOptions& o) {
+  draw_packing(diagram, path, o);
+  return std::make_unique<Image>(path);
+}
+
 Vec2L contact_point(const Pattern& p, const Bond& b) {
   const Vec2L& a = p.packing.points[b.a];
   if (b.is_wall()) return a - wall_normal<long double>(b.side()) * (p.packing.d / 2);
@@ -219,12 +228,11 @@ TEST_F(DiagramTest, PngPixelsAreWhiteAtRattlersGreyAtDisksAndBlackAtContacts) {
   const Pattern& p = t22a().pattern;
   for (bool labels : {false, true}) {
     const DiagramOptions o{900, labels, false};
-    draw_packing(t22a(), path("t22a.png"), o);
-    const Image image(path("t22a.png"));
-    ASSERT_TRUE(image.ok());
-    EXPECT_EQ(image.width(), 900);
-    EXPECT_GT(image.height(), 780);  // the triangle (height ~0.87 of the width) and the caption
-    auto at = [&](const Vec2L& u) { return image.at(diagram_position(p.packing.d, u, o)); };
+    const auto image = drawn_png(t22a(), path("t22a.png"), o);
+    ASSERT_TRUE(image->ok());
+    EXPECT_EQ(image->width(), 900);
+    EXPECT_GT(image->height(), 780);  // the triangle (height ~0.87 of the width) and the caption
+    auto at = [&](const Vec2L& u) { return image->at(diagram_position(p.packing.d, u, o)); };
     for (std::size_t i = 0; i < p.packing.size(); ++i) {
       const Vec2L where = labels ? beside_label(p, i) : p.packing.points[i];
       if (is_rattler(p, i))
@@ -252,8 +260,8 @@ TEST_F(DiagramTest, PngPixelsAreWhiteAtRattlersGreyAtDisksAndBlackAtContacts) {
       for (int dx = -wide; dx <= wide; ++dx)
         for (int dy = -high; dy <= high; ++dy)
           dark += image
-                      .at(diagram_position(p.packing.d, p.packing.points[i], o) +
-                          Vec2{1.0 * dx, 1.0 * dy})
+                      ->at(diagram_position(p.packing.d, p.packing.points[i], o) +
+                           Vec2{1.0 * dx, 1.0 * dy})
                       .black();
       if (labels)
         EXPECT_GT(dark, 10) << "no label on disk " << i;
@@ -266,9 +274,8 @@ TEST_F(DiagramTest, PngPixelsAreWhiteAtRattlersGreyAtDisksAndBlackAtContacts) {
 TEST_F(DiagramTest, PngForcesAreLinesAlongTheBonds) {
   const Pattern& p = t22a().pattern;
   const DiagramOptions o{900, true, true};
-  draw_packing(t22a(), path("forces.png"), o);
-  const Image image(path("forces.png"));
-  ASSERT_TRUE(image.ok());
+  const auto image = drawn_png(t22a(), path("forces.png"), o);
+  ASSERT_TRUE(image->ok());
   long double largest = 0;
   for (long double f : t22a().forces) largest = std::max(largest, f);
   int checked = 0;
@@ -278,7 +285,7 @@ TEST_F(DiagramTest, PngForcesAreLinesAlongTheBonds) {
     if (t22a().forces[k] < 0.2L * largest) continue;
     const Vec2L a = p.packing.points[p.bonds[k].a], towards = contact_point(p, p.bonds[k]) - a;
     const Vec2L probe = a + towards * (0.4L * p.packing.d / norm(towards));
-    const Rgb c = image.at(diagram_position(p.packing.d, probe, o));
+    const Rgb c = image->at(diagram_position(p.packing.d, probe, o));
     EXPECT_TRUE(c.red()) << "bond " << k << ": " << c;
     ++checked;
   }
@@ -290,11 +297,10 @@ TEST_F(DiagramTest, LargePackingStaysReadableAndSmallPicturesDropTheLabels) {
   // read and are left out, so the picture is the one without labels.
   const Pattern& p = t254().pattern;
   const DiagramOptions o{900, false, false};
-  draw_packing(t254(), path("t254.png"), o);
-  const Image image(path("t254.png"));
-  ASSERT_TRUE(image.ok());
+  const auto image = drawn_png(t254(), path("t254.png"), o);
+  ASSERT_TRUE(image->ok());
   for (std::size_t i = 0; i < p.packing.size(); ++i) {
-    const Rgb c = image.at(diagram_position(p.packing.d, p.packing.points[i], o));
+    const Rgb c = image->at(diagram_position(p.packing.d, p.packing.points[i], o));
     EXPECT_TRUE(is_rattler(p, i) ? c.white() : c.grey()) << "disk " << i << ": " << c;
   }
   draw_packing(t254(), path("labels.svg"), {900, true, false});
@@ -305,24 +311,13 @@ TEST_F(DiagramTest, LargePackingStaysReadableAndSmallPicturesDropTheLabels) {
   EXPECT_EQ(read_bytes(path("small-labels.svg")), read_bytes(path("small-none.svg")));
 }
 
-void expect_one_line_error(const std::function<void()>& f, const std::string& contains) {
-  try {
-    f();
-    ADD_FAILURE() << "no error; expected one containing '" << contains << "'";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-    EXPECT_NE(what.find(contains), std::string::npos) << what;
-  }
-}
-
 TEST_F(DiagramTest, BadExtensionsUnwritablePathsAndMissingForcesAreOneLineErrors) {
-  expect_one_line_error([&] { draw_packing(t22a(), path("t22a.jpg")); }, "'.jpg'");
-  expect_one_line_error([&] { draw_packing(t22a(), path("t22a")); }, ".svg, .png or .pdf");
-  expect_one_line_error([&] { draw_packing(t22a(), path("x.svg/t22a")); }, ".svg, .png or .pdf");
+  expect_one_line_error([&] { draw_packing(t22a(), path("t22a.jpg")); }, {"'.jpg'"});
+  expect_one_line_error([&] { draw_packing(t22a(), path("t22a")); }, {".svg, .png or .pdf"});
+  expect_one_line_error([&] { draw_packing(t22a(), path("x.svg/t22a")); }, {".svg, .png or .pdf"});
   for (const std::string ext : {"svg", "png", "pdf"}) {
     const std::string bad = path("no-such-dir/t22a." + ext);
-    expect_one_line_error([&] { draw_packing(t22a(), bad); }, bad);
+    expect_one_line_error([&] { draw_packing(t22a(), bad); }, {bad});
     EXPECT_FALSE(std::filesystem::exists(bad));
   }
   Diagram no_forces = t22a();
@@ -331,8 +326,8 @@ TEST_F(DiagramTest, BadExtensionsUnwritablePathsAndMissingForcesAreOneLineErrors
       [&] {
         draw_packing(no_forces, path("f.png"), {900, true, true});
       },
-      "0 forces for 47 bonds");
-  expect_one_line_error([&] { draw_packing(t22a(), path("w.png"), {10, true, false}); }, "width");
+      {"0 forces for 47 bonds"});
+  expect_one_line_error([&] { draw_packing(t22a(), path("w.png"), {10, true, false}); }, {"width"});
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bond_systems.hpp"
 #include "constructors/builders.hpp"
 #include "pipeline/analyze.hpp"
 #include "polish/polish_mp.hpp"
@@ -44,6 +45,13 @@ std::string decimal(const Num& v, int digits) {
   mpfr_free_str(raw);
   EXPECT_EQ(e, 0);
   return "0." + s;
+}
+
+// GL1995 Sec.5: d(4Delta(k)) = 1/(2k - 2 + sqrt3).
+void four_delta_closed_form(Num& d, long k) {
+  mpfr_sqrt_ui(d.v, 3, MPFR_RNDN);
+  mpfr_add_si(d.v, d.v, 2 * k - 2, MPFR_RNDN);
+  mpfr_ui_div(d.v, 1, d.v, MPFR_RNDN);
 }
 
 // docs/classes.md "closed forms": d(t22a) = 5 sqrt3 / (20 sqrt3 + 7 + 2 sqrt11).
@@ -87,15 +95,12 @@ TEST(Multiprecision, EvenRippleT22aTo30Digits) {
 }
 
 TEST(Multiprecision, FourDeltaTo100Digits) {
-  // GL1995 Sec.5: d(4Delta(k)) = 1/(2k - 2 + sqrt3).
   for (long k = 1; k <= 10; ++k) {
     const Pattern pat = build_four_delta(k);
     const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 100);
     ASSERT_TRUE(mp.converged) << "k = " << k;
     Num exact(100);
-    mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
-    mpfr_add_si(exact.v, exact.v, 2 * k - 2, MPFR_RNDN);
-    mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+    four_delta_closed_form(exact, k);
     expect_close(mp.d, exact, 100);
   }
 }
@@ -107,9 +112,7 @@ TEST(Multiprecision, FourDeltaTo300Digits) {
   const auto mp = polish_multiprecision(pat.packing, pat.bonds, pat.rattlers, 300);
   ASSERT_TRUE(mp.converged);
   Num exact(300);
-  mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
-  mpfr_add_ui(exact.v, exact.v, 4, MPFR_RNDN);
-  mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+  four_delta_closed_form(exact, 3);
   expect_close(mp.d, exact, 300);
 }
 
@@ -169,11 +172,7 @@ TEST(Multiprecision, InconsistencyBelowLongDoubleToleranceIsCaught) {
 TEST(Multiprecision, RankDeficientConsistentSystemsConverge) {
   // A floor pair plus a disk with no bonds (not declared a rattler): its column is empty, the
   // least-squares steps leave it alone, and the bonded pair is polished.
-  Packing p;
-  p.points = {{0.2, 0.0}, {0.5001, 0.0002}, {0.5, 0.4}};
-  p.d = 0.3;
-  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
-                                Bond::wall(1, Side::Bottom)};
+  const auto [p, bonds] = floor_pair_and_an_unbonded_disk();
   const auto mp = polish_multiprecision(p, bonds, {}, 40);
   ASSERT_TRUE(mp.converged);
   EXPECT_LT(mp.log10_max_residual, -43);
@@ -294,9 +293,7 @@ TEST(Multiprecision, FourDeltaTo10000Digits) {
   ASSERT_TRUE(mp.converged);
   EXPECT_LE(mp.iterations, 12);
   Num exact(10000);
-  mpfr_sqrt_ui(exact.v, 3, MPFR_RNDN);
-  mpfr_add_ui(exact.v, exact.v, 4, MPFR_RNDN);
-  mpfr_ui_div(exact.v, 1, exact.v, MPFR_RNDN);
+  four_delta_closed_form(exact, 3);
   expect_close(mp.d, exact, 10000);
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "one_line_error.hpp"
 #include "report/plot.hpp"
 
 namespace tripack::report {
@@ -148,13 +149,21 @@ TEST(Plot, DeltaWritesDataScriptAndPictures) {
   fs::remove_all(dir);
 }
 
+// The synthetic points and atlas points (in no class, delta `delta`) at `ns`, plotted in the
+// scratch directory `name`.
+fs::path plot_with_atlas_points(const std::string& name, std::initializer_list<long long> ns,
+                                double delta) {
+  const fs::path dir = scratch(name);
+  std::vector<DeltaPoint> points = synthetic();
+  for (long long n : ns) points.push_back({n, delta, "", false, false, true});
+  plot_delta(points, dir);
+  return dir;
+}
+
 // The atlas's points: a column of their own, drawn as grey dots under one legend
 // entry, never as the classless open squares even though their class is "".
 TEST(Plot, AtlasPointsHaveTheirOwnColumnAndLegend) {
-  const fs::path dir = scratch("delta-atlas");
-  std::vector<DeltaPoint> points = synthetic();
-  for (long long n : {50, 51, 52}) points.push_back({n, 0.3, "", false, false, true});
-  plot_delta(points, dir);
+  const fs::path dir = plot_with_atlas_points("delta-atlas", {50, 51, 52}, 0.3);
   const auto csv = lines(slurp(dir / "delta.csv"));
   int atlas_rows = 0;
   for (std::size_t i = 1; i < csv.size(); ++i) {
@@ -220,10 +229,7 @@ std::string clause_title(const std::string& clause) {
 // are drawn last, on top of the squares, crosses and rings at the same n (they were drawn
 // first, hidden under them).
 TEST(Plot, EveryMarkerKindHasAKeyEntryAndTheAtlasIsOnTop) {
-  const fs::path dir = scratch("delta-key");
-  std::vector<DeltaPoint> points = synthetic();
-  for (long long n : {18, 23, 50}) points.push_back({n, 0.37, "", false, false, true});
-  plot_delta(points, dir);
+  const fs::path dir = plot_with_atlas_points("delta-key", {18, 23, 50}, 0.37);
   const auto clauses = plot_clauses(slurp(dir / "delta.gp"));
   ASSERT_GE(clauses.size(), 6u);
   std::vector<std::string> marker_styles;
@@ -344,15 +350,7 @@ TEST(Plot, AccuracyJoinsEachSeriesInTimeOrder) {
 TEST(Plot, MissingGnuplotNamesThePackage) {
   const fs::path dir = scratch("missing");
   ScopedEnv env("TRIPACK_GNUPLOT", "/nonexistent");
-  try {
-    find_gnuplot();
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("gnuplot-nox"), std::string::npos) << what;
-    EXPECT_NE(what.find("/nonexistent"), std::string::npos) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  }
+  expect_one_line_error([] { find_gnuplot(); }, {"gnuplot-nox", "/nonexistent"});
   EXPECT_THROW(plot_delta(synthetic(), dir), std::runtime_error);
   EXPECT_FALSE(fs::exists(dir / "delta.csv"));  // checked before anything is written
 }
@@ -366,15 +364,8 @@ TEST(Plot, GnuplotFailureIsOneLine) {
          "exit 1\n";
   fs::permissions(fake, fs::perms::owner_all);
   ScopedEnv env("TRIPACK_GNUPLOT", fake.c_str());
-  try {
-    plot_delta(synthetic(), dir / "out");
-    FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("gnuplot failed on"), std::string::npos) << what;
-    EXPECT_NE(what.find("delta.gp\" line 9: no such thing"), std::string::npos) << what;
-    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-  }
+  expect_one_line_error([&] { plot_delta(synthetic(), dir / "out"); },
+                        {"gnuplot failed on", "delta.gp\" line 9: no such thing"});
   EXPECT_FALSE(fs::exists(dir / "out" / "delta.png"));
   fs::remove_all(dir);
 }

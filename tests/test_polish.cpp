@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "bond_systems.hpp"
 #include "constructors/builders.hpp"
 #include "polish/polish.hpp"
 
@@ -46,11 +47,7 @@ TEST(Polish, OverDeterminedSystemsReachTheRoundingFloor) {
 TEST(Polish, RankDeficientSystemsStillConverge) {
   // Under-determined but consistent: a floor pair and a disk with no bonds at all. (Delta(k)-1 is
   // floppy only with unilateral contacts; as a bar framework it is rigid, see test below.)
-  Packing p;
-  p.points = {{0.2, 0.0}, {0.5001, 0.0002}, {0.5, 0.4}};
-  p.d = 0.3;
-  const std::vector<Bond> bonds{Bond::pair(0, 1), Bond::wall(0, Side::Bottom),
-                                Bond::wall(1, Side::Bottom)};
+  auto [p, bonds] = floor_pair_and_an_unbonded_disk();
   const auto rep = polish_bond_system(p, bonds, {});
   EXPECT_TRUE(rep.converged);
   EXPECT_EQ(rep.unknowns, 7);

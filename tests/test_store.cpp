@@ -48,6 +48,13 @@ RunRecord run(long long n, std::uint64_t seed, std::optional<StoredPacking> p) {
   return r;
 }
 
+// A run of n = 3 by `method` (empty: RunRecord's default) that ended in the packing "h3".
+RunRecord run_to_h3(std::uint64_t seed, const std::string& method = "") {
+  RunRecord r = run(3, seed, packing(3, "0.5", "h3"));
+  if (!method.empty()) r.method = method;
+  return r;
+}
+
 // Threads and MPI ranks finish units in any order; the stored packing must not depend on it: a
 // packing found by several runs keeps the smallest seed and that run's coordinates and d.
 TEST(Store, APackingKeepsItsSmallestSeedWhateverOrderTheUnitsFinishIn) {
@@ -309,11 +316,9 @@ TEST(Store, MigratesAVersion1FileInPlace) {
 // A unit is (n, seed, method): a search chain of seed 7 is not the billiards run of seed 7, and
 // each is recorded once.
 TEST(Store, ASearchChainAndABilliardsRunOfOneSeedAreTwoUnits) {
-  const std::string path = fresh_path("methods.db");
-  ResultsDb db = ResultsDb::open(path);
-  EXPECT_TRUE(db.record(run(3, 7, packing(3, "0.5", "h3"))));
-  RunRecord chain = run(3, 7, packing(3, "0.5", "h3"));
-  chain.method = "search 30 s";
+  ResultsDb db = ResultsDb::open(fresh_path("methods.db"));
+  EXPECT_TRUE(db.record(run_to_h3(7)));
+  const RunRecord chain = run_to_h3(7, "search 30 s");
   EXPECT_FALSE(db.has_run(3, 7, chain.method));
   EXPECT_TRUE(db.record(chain));
   EXPECT_FALSE(db.record(chain));  // recorded once
@@ -329,15 +334,10 @@ TEST(Store, ASearchChainAndABilliardsRunOfOneSeedAreTwoUnits) {
 // continued from stored packings does not; the count survives into the packing record and
 // into the best-per-n query (which reads the runs table through a derived table).
 TEST(Store, ContinuedSearchesDoNotConfirmAPacking) {
-  const std::string path = fresh_path("confirm.db");
-  ResultsDb db = ResultsDb::open(path);
-  EXPECT_TRUE(db.record(run(3, 1, packing(3, "0.5", "h3"))));
-  RunRecord chain = run(3, 2, packing(3, "0.5", "h3"));
-  chain.method = "search 30 s";
-  EXPECT_TRUE(db.record(chain));
-  RunRecord continued = run(3, 3, packing(3, "0.5", "h3"));
-  continued.method = "search 30 s, continued";
-  EXPECT_TRUE(db.record(continued));
+  ResultsDb db = ResultsDb::open(fresh_path("confirm.db"));
+  EXPECT_TRUE(db.record(run_to_h3(1)));
+  EXPECT_TRUE(db.record(run_to_h3(2, "search 30 s")));
+  EXPECT_TRUE(db.record(run_to_h3(3, "search 30 s, continued")));
   const StoredPacking stored = db.packings(3).at(0);
   EXPECT_EQ(stored.runs, 3);
   EXPECT_EQ(stored.independent_runs, 2);

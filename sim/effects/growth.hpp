@@ -29,8 +29,7 @@ class Growth : public EffectHooks {
 
   static void parse(const YAML::Node& node, Scene& s) {
     s.growth = GrowthEffect{};
-    if (node.IsNull()) return;
-    check_keys(node, {"rate", "schedule"}, "effects.growth");
+    if (!has_options(node, {"rate", "schedule"}, "effects.growth")) return;
     if (node["rate"]) s.growth->rate = scalar<double>(node["rate"], "growth.rate");
     const auto schedule = node["schedule"];
     if (!schedule) return;

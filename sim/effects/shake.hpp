@@ -60,8 +60,7 @@ class Shake : public EffectHooks {
 
   static void parse(const YAML::Node& node, Scene& s) {
     s.shake = ShakeEffect{};
-    if (node.IsNull()) return;
-    check_keys(node, {"per_disk", "rattler_factor"}, "effects.shake");
+    if (!has_options(node, {"per_disk", "rattler_factor"}, "effects.shake")) return;
     if (node["per_disk"]) s.shake->per_disk = count(node["per_disk"], "shake.per_disk");
     if (node["rattler_factor"])
       s.shake->rattler_factor = scalar<double>(node["rattler_factor"], "shake.rattler_factor");

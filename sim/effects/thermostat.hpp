@@ -22,8 +22,7 @@ class Thermostat : public EffectHooks {
 
   static void parse(const YAML::Node& node, Scene& s) {
     s.thermostat = ThermostatEffect{};
-    if (node.IsNull()) return;
-    check_keys(node, {"every"}, "effects.thermostat");
+    if (!has_options(node, {"every"}, "effects.thermostat")) return;
     if (node["every"]) s.thermostat->every = count(node["every"], "thermostat.every");
   }
   static void validate(const Scene&) {}
