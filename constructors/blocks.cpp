@@ -10,28 +10,28 @@
 namespace tripack {
 
 void DiskUnitsPattern::set_side(long double side) {
-  if (tracks_exact_) throw std::logic_error("set_side on an exact pattern");
+  if (tracks_sqrt3_) throw std::logic_error("set_side on an exact pattern");
   L_ = side;
 }
 
 void DiskUnitsPattern::reserve(std::size_t n) {
   pts_.reserve(n);
-  if (tracks_exact_) {
+  if (tracks_sqrt3_) {
     ex_.reserve(n);
     known_.reserve(n);
   }
 }
 
-int DiskUnitsPattern::add_exact(const ExactPoint& p) {
-  if (!tracks_exact_) throw std::logic_error("exact disk added to an inexact pattern");
+int DiskUnitsPattern::add_sqrt3(const Sqrt3Point& p) {
+  if (!tracks_sqrt3_) throw std::logic_error("exact disk added to an inexact pattern");
   pts_.push_back(p.value());
   ex_.push_back(p);
   known_.push_back(1);
   return static_cast<int>(pts_.size()) - 1;
 }
 
-void DiskUnitsPattern::move_exact(int i, const ExactPoint& p) {
-  if (!tracks_exact_) throw std::logic_error("exact move in an inexact pattern");
+void DiskUnitsPattern::move_sqrt3(int i, const Sqrt3Point& p) {
+  if (!tracks_sqrt3_) throw std::logic_error("exact move in an inexact pattern");
   const auto u = static_cast<std::size_t>(i);
   pts_.at(u) = p.value();
   ex_[u] = p;
@@ -42,7 +42,7 @@ void DiskUnitsPattern::erase(int i) {
   if (i < 0 || static_cast<std::size_t>(i) >= pts_.size())
     throw std::out_of_range("DiskUnitsPattern::erase");
   pts_.erase(pts_.begin() + i);
-  if (tracks_exact_) {
+  if (tracks_sqrt3_) {
     ex_.erase(ex_.begin() + i);
     known_.erase(known_.begin() + i);
   }
@@ -59,19 +59,19 @@ int DiskUnitsPattern::add_triangle(const Vec2L& corner, const Vec2L& a, const Ve
   for (long i = 0; i < k; ++i)
     for (long j = 0; i + j < k; ++j)
       pts_.push_back(corner + a * static_cast<long double>(i) + b * static_cast<long double>(j));
-  sync_exact();
+  sync_sqrt3();
   record_triangle_bonds(first, k);
   return first;
 }
 
-int DiskUnitsPattern::add_triangle(const ExactPoint& corner, const ExactPoint& a,
-                                   const ExactPoint& b, long k) {
-  if (!tracks_exact_) throw std::logic_error("exact triangle added to an inexact pattern");
+int DiskUnitsPattern::add_triangle(const Sqrt3Point& corner, const Sqrt3Point& a,
+                                   const Sqrt3Point& b, long k) {
+  if (!tracks_sqrt3_) throw std::logic_error("exact triangle added to an inexact pattern");
   const int first = static_cast<int>(pts_.size());
   for (long i = 0; i < k; ++i) {
-    const ExactPoint row = corner + a * i;
+    const Sqrt3Point row = corner + a * i;
     for (long j = 0; i + j < k; ++j) {
-      const ExactPoint p = row + b * j;
+      const Sqrt3Point p = row + b * j;
       pts_.push_back(p.value());
       ex_.push_back(p);
       known_.push_back(1);
@@ -186,10 +186,10 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
   out.rattlers = rattlers_;
   out.provenance = std::move(provenance);
   out.packing.d = 1.0L / L_;
-  if (tracks_exact_) {
+  if (tracks_sqrt3_) {
     // Points pushed through points() have no exact data; rattlers were moved numerically. A known
     // disk must still be where its exact coordinates say (nobody moved it through points()).
-    sync_exact();
+    sync_sqrt3();
     for (int r : rattlers_) known_[static_cast<std::size_t>(r)] = 0;
     for (std::size_t i = 0; i < n; ++i) {
       if (!known_[i]) continue;
@@ -197,8 +197,8 @@ Pattern DiskUnitsPattern::finish(Provenance provenance) {
       if (std::fabs(v.x) > kBondTolerance || std::fabs(v.y) > kBondTolerance)
         throw std::logic_error("disk " + std::to_string(i) + " moved away from its exact position");
     }
-    out.exact = ExactDiskUnits{exact_L_, std::move(ex_), std::move(known_)};
-    tracks_exact_ = false;  // the exact data have moved out
+    out.sqrt3 = Sqrt3DiskUnits{sqrt3_L_, std::move(ex_), std::move(known_)};
+    tracks_sqrt3_ = false;  // the exact data have moved out
   }
   out.packing.points.resize(n);
   for (std::size_t i = 0; i < n; ++i) {

@@ -19,24 +19,24 @@ inline constexpr long double kBondTolerance = 1e-10L;
 class DiskUnitsPattern {
  public:
   explicit DiskUnitsPattern(long double side) : L_(side) {}
-  // A pattern that also tracks exact coordinates (p + q sqrt3)/2: finish() fills Pattern::exact.
+  // A pattern that also tracks exact coordinates (p + q sqrt3)/2: finish() fills Pattern::sqrt3.
   // Disks added from long double coordinates, and rattlers (centred numerically), are marked
   // not known. The long double coordinates of exact disks are derived from the exact ones.
   explicit DiskUnitsPattern(const HalfSurd3& side)
-      : L_(side.value()), exact_L_(side), tracks_exact_(true) {}
+      : L_(side.value()), sqrt3_L_(side), tracks_sqrt3_(true) {}
 
   long double side() const { return L_; }
-  bool tracks_exact() const { return tracks_exact_; }
+  bool tracks_sqrt3() const { return tracks_sqrt3_; }
   void set_side(long double side);  // not for exact patterns (throws std::logic_error)
   int add(const Vec2L& p) {
     pts_.push_back(p);
-    sync_exact();
+    sync_sqrt3();
     return static_cast<int>(pts_.size()) - 1;
   }
-  int add_exact(const ExactPoint& p);  // exact patterns only (named apart: {x, y} stays a Vec2L)
+  int add_sqrt3(const Sqrt3Point& p);  // exact patterns only (named apart: {x, y} stays a Vec2L)
   void reserve(std::size_t n);
   // Moves disk i to an exact position (exact patterns only).
-  void move_exact(int i, const ExactPoint& p);
+  void move_sqrt3(int i, const Sqrt3Point& p);
   // Removes disk i; later indices shift down by one (in rattlers and recorded bonds too).
   void erase(int i);
   // Hexagonal triangle Delta(k): corner + i*a + j*b for i + j <= k - 1 (a, b unit vectors 60
@@ -44,7 +44,7 @@ class DiskUnitsPattern {
   // Its 3k(k-1)/2 internal lattice bonds are recorded.
   int add_triangle(const Vec2L& corner, const Vec2L& a, const Vec2L& b, long k);
   // The same from exact data (exact patterns only): integer arithmetic, then one conversion.
-  int add_triangle(const ExactPoint& corner, const ExactPoint& a, const ExactPoint& b, long k);
+  int add_triangle(const Sqrt3Point& corner, const Sqrt3Point& a, const Sqrt3Point& b, long k);
   static long index_in_triangle(long k, long i, long j);
   // The three edges of a triangle added at `first`: along a (j = 0), along b (i = 0), and the
   // far edge (i + j = k - 1, ordered by j). Each lists k indices.
@@ -77,17 +77,17 @@ class DiskUnitsPattern {
  private:
   void record_triangle_bonds(int first, long k);
   // Disks added without exact data: not known.
-  void sync_exact() {
-    if (tracks_exact_) {
+  void sync_sqrt3() {
+    if (tracks_sqrt3_) {
       ex_.resize(pts_.size());
       known_.resize(pts_.size(), 0);
     }
   }
 
   long double L_;
-  HalfSurd3 exact_L_;
-  bool tracks_exact_ = false;
-  std::vector<ExactPoint> ex_;
+  HalfSurd3 sqrt3_L_;
+  bool tracks_sqrt3_ = false;
+  std::vector<Sqrt3Point> ex_;
   std::vector<char> known_;
   std::vector<Vec2L> pts_;
   std::vector<int> rattlers_;

@@ -130,10 +130,11 @@ ClassInfo parse_class(const YAML::Node& node) {
       c.variants.push_back(std::move(vi));
     }
   }
-  read_members(node, "exact_L", ctx, c.exact_L, [&](const YAML::Node& x, ExactL& e) {
-    e.L = expr(req_string(x, "L", ctx + ".exact_L"), ctx + ".exact_L");
-    e.source = opt_string(x, "source");
-  });
+  read_members(node, "closed_form_L", ctx, c.closed_form_L,
+               [&](const YAML::Node& x, ClosedFormL& e) {
+                 e.L = expr(req_string(x, "L", ctx + ".closed_form_L"), ctx + ".closed_form_L");
+                 e.source = opt_string(x, "source");
+               });
   read_members(node, "references", ctx, c.references,
                [&](const YAML::Node& r, ReferenceValue& ref) {
                  ref.n = opt_long(r, "n", 0, ctx);
@@ -377,9 +378,9 @@ std::optional<long double> Catalogue::L_of(const ClassInfo& c, long k, long p) c
   return c.L.eval<long double>(real_env(k, p));
 }
 
-const Expression* Catalogue::exact_L_of(const ClassInfo& c, long k, long p) const {
+const Expression* Catalogue::closed_form_L_of(const ClassInfo& c, long k, long p) const {
   if (c.closed_form) return &c.L;
-  for (const auto& e : c.exact_L) {
+  for (const auto& e : c.closed_form_L) {
     const bool k_ok = (e.k == 0 || e.k == k);
     const bool p_ok = (e.p == 0 || e.p == p);
     if (k_ok && p_ok) return &e.L;

@@ -34,7 +34,7 @@ struct ReferenceValue {
   std::optional<long long> bonds, rattlers;
 };
 
-struct ExactL {
+struct ClosedFormL {
   long k = 0, p = 0;  // 0 = "any"
   Expression L;
   std::string source;
@@ -53,7 +53,7 @@ struct ClassInfo {
   Expression bonds, rattlers;  // may be empty (then per variant)
   bool rigid = true;
   std::vector<VariantInfo> variants;
-  std::vector<ExactL> exact_L;
+  std::vector<ClosedFormL> closed_form_L;
   std::string note, claim_status, claim_best, claim_tight, claim_source;
   std::vector<ReferenceValue> references;
 };
@@ -99,7 +99,7 @@ class Catalogue {
   // L from the catalogue formula (chain functions evaluated by the chain solver), if any.
   std::optional<long double> L_of(const ClassInfo& c, long k, long p) const;
   // An exact closed form for L at (k, p), if the catalogue has one.
-  const Expression* exact_L_of(const ClassInfo& c, long k, long p) const;
+  const Expression* closed_form_L_of(const ClassInfo& c, long k, long p) const;
 
  private:
   std::vector<ClassInfo> classes_;

@@ -9,7 +9,7 @@
 namespace tripack {
 
 namespace {
-using E = ExactDirections;
+using E = Sqrt3Directions;
 }
 
 Pattern build_four_delta(long k) {
@@ -19,7 +19,7 @@ Pattern build_four_delta(long k) {
   pat.reserve(static_cast<std::size_t>(2 * k * (k + 1)));
   const HalfSurd3 zero{}, half = {1, 0};
   // The apex (L/2, L sqrt3/2): L/2 = (2k-2 + sqrt3)/2, L sqrt3/2 = (3 + (2k-2) sqrt3)/2.
-  const ExactPoint apex{{2 * (k - 1), 1}, {3, 2 * (k - 1)}};
+  const Sqrt3Point apex{{2 * (k - 1), 1}, {3, 2 * (k - 1)}};
   pat.add_triangle({zero, zero}, E::e0, E::e60, k);      // bottom-left corner
   pat.add_triangle({L, zero}, E::e180, E::e120, k);      // bottom-right corner
   pat.add_triangle(apex, E::e240, E::e300, k);           // top corner

@@ -8,20 +8,20 @@
 namespace tripack {
 
 namespace {
-using E = ExactDirections;
+using E = Sqrt3Directions;
 }
 
 Pattern build_hexagonal(long k) {
   if (k < 2) throw std::invalid_argument("Delta(k) needs k >= 2");
   DiskUnitsPattern pat(HalfSurd3::integer(k - 1));
-  pat.add_triangle(ExactPoint{}, E::e0, E::e60, k);
+  pat.add_triangle(Sqrt3Point{}, E::e0, E::e60, k);
   return pat.finish({});
 }
 
 Pattern build_hexagonal_minus_one(long k) {
   if (k < 2) throw std::invalid_argument("Delta(k)-1 needs k >= 2");
   DiskUnitsPattern pat(HalfSurd3::integer(k - 1));
-  pat.add_triangle(ExactPoint{}, E::e0, E::e60, k);
+  pat.add_triangle(Sqrt3Point{}, E::e0, E::e60, k);
   pat.erase(0);  // the bottom-left corner disk
   return pat.finish({});
 }

@@ -71,7 +71,7 @@ void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& o
   }
   out << "# n: " << pk.size() << "\n";
   if (!options.label.empty()) out << "# label: " << options.label << "\n";
-  out << "# d: " << (options.exact_d.empty() ? value(pk.d) : options.exact_d) << "\n";
+  out << "# d: " << (options.precise_d.empty() ? value(pk.d) : options.precise_d) << "\n";
   if (c == Convention::Radius) out << "# r: " << r << "\n";
   if (c == Convention::UnitDiskSide) out << "# S: " << S << "\n";
   if (!pv.class_id.empty()) {
@@ -83,10 +83,10 @@ void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& o
   for (int r : pattern.rattlers) out << ' ' << r;
   out << "\n";
   for (const auto& line : options.comments) out << "# " << line << "\n";
-  const bool exact = c == Convention::UnitTriangle && options.exact_points &&
-                     options.exact_points->size() == pk.size();
-  if (exact) {
-    for (const auto& p : *options.exact_points) out << p[0] << ' ' << p[1] << "\n";
+  const bool precise = c == Convention::UnitTriangle && options.precise_points &&
+                       options.precise_points->size() == pk.size();
+  if (precise) {
+    for (const auto& p : *options.precise_points) out << p[0] << ' ' << p[1] << "\n";
     return;
   }
   for (const auto& p : points_in(pattern, c)) {
@@ -132,13 +132,13 @@ void write_json(std::ostream& out, const Pattern& pattern, const WriteOptions& o
   j["k"] = pattern.provenance.k;
   j["p"] = pattern.provenance.p;
   j["variant"] = pattern.provenance.variant;
-  json pts = json::array(), exact = json::array();
+  json pts = json::array(), decimal = json::array();
   for (const auto& p : points_in(pattern, c)) {
     pts.push_back({static_cast<double>(p.x), static_cast<double>(p.y)});
-    exact.push_back({text(p.x), text(p.y)});
+    decimal.push_back({text(p.x), text(p.y)});
   }
   j["points"] = std::move(pts);
-  j["points_exact"] = std::move(exact);
+  j["points_decimal"] = std::move(decimal);
   j["rattlers"] = pattern.rattlers;
   json bonds = json::array();
   for (const auto& b : pattern.bonds) {
@@ -616,10 +616,13 @@ PointsFile read_json(std::istream& in) {
   }
   if (!j.is_object() || !j.contains("points") || !j["points"].is_array())
     throw InputError("JSON has no \"points\" array (nor is it a list of points)");
-  const bool exact = j.contains("points_exact") && j["points_exact"].is_array() &&
-                     j["points_exact"].size() == j["points"].size();
+  // The decimal strings, when they hold every point; files written before 2026-11-29 name them
+  // "points_exact" (docs/conventions.md, "Names").
+  const char* decimal = j.contains("points_decimal") ? "points_decimal" : "points_exact";
+  const bool digits =
+      j.contains(decimal) && j[decimal].is_array() && j[decimal].size() == j["points"].size();
   file.layout = "json points";
-  file.points = json_point_list(exact ? j["points_exact"] : j["points"]);
+  file.points = json_point_list(digits ? j[decimal] : j["points"]);
   return file;
 }
 

@@ -36,9 +36,9 @@ struct WriteOptions {
   int d_digits = 21;  // of d, L, r and S (fewer when d is known to fewer digits)
   std::string label;  // the packing's name (t22a), written in the header when given
   // Text in the unit-triangle convention: decimal strings beyond long double (an MPFR polish),
-  // written in place of d and of the coordinates when given (exact_points: one per point).
-  std::string exact_d;
-  const std::vector<std::array<std::string, 2>>* exact_points = nullptr;
+  // written in place of d and of the coordinates when given (precise_points: one per point).
+  std::string precise_d;
+  const std::vector<std::array<std::string, 2>>* precise_points = nullptr;
   std::vector<std::string> comments;  // extra "# ..." header lines (the text format only)
 };
 
@@ -49,7 +49,7 @@ void write_text(std::ostream& out, const Pattern& pattern, const WriteOptions& o
 // CSV: header "index,x,y,rattler", one row per disk (another convention: a comment line first).
 void write_csv(std::ostream& out, const Pattern& pattern, const WriteOptions& options = {});
 // JSON: {"n", "d" (string, 21 digits), "L", "class", "k", "p", "variant", "convention",
-//        "points": [[x, y], ...] (numbers), "points_exact": [["x", "y"], ...] (21-digit strings),
+//        "points": [[x, y], ...] (numbers), "points_decimal": [["x", "y"], ...] (21-digit strings),
 //        "rattlers": [...], "bonds": [[i, j] or [i, "left"], ...]}; in another convention also
 //        "r" (the circles' radius in the file's units) and "side" (the container's side).
 void write_json(std::ostream& out, const Pattern& pattern, const WriteOptions& options = {});
@@ -106,7 +106,8 @@ struct PointsFile {
 //  * CSV: a header naming the columns (x, y; optional index/i/id, r/radius, rattler; others
 //    ignored; any order, any case) or none: then "x,y", three columns told apart as in text, or
 //    "index,x,y,rattler". An index column orders the points; an r column gives the radius.
-//  * JSON: {"points": [[x, y], ...]} (preferring "points_exact" of the same length), or
+//  * JSON: {"points": [[x, y], ...]} (preferring "points_decimal", or "points_exact" from older
+//  files, of the same length), or
 //    {"points": [{"x": .., "y": ..}, ...]}, or a bare list of either; numbers or decimal
 //    strings, read to long double.
 // Text and CSV comment lines "# d: ...", "# convention: NAME ...", "# n: N" and "# label: L"

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/exact.hpp"
 #include "core/geometry.hpp"
+#include "core/sqrt3.hpp"
 
 namespace tripack {
 
@@ -45,7 +45,7 @@ struct Pattern {
   std::vector<Bond> bonds;    // sorted, unique; rattlers carry none
   std::vector<int> rattlers;  // sorted disk indices
   Provenance provenance;
-  std::optional<ExactDiskUnits> exact;  // closed-form builders only
+  std::optional<Sqrt3DiskUnits> sqrt3;  // closed-form builders only
 };
 
 // n(k) helper used everywhere: Delta(k) = k(k+1)/2.

@@ -83,7 +83,7 @@ Pattern transformed(const Pattern& p, Symmetry g) {
     if (bond.is_wall()) bond = Bond::wall(bond.a, apply(g, bond.side()));
   }
   std::sort(out.bonds.begin(), out.bonds.end());
-  if (g != Symmetry::Identity) out.exact.reset();
+  if (g != Symmetry::Identity) out.sqrt3.reset();
   return out;
 }
 
@@ -106,10 +106,10 @@ Pattern relabelled(const Pattern& p, const std::vector<int>& permutation) {
   std::sort(out.bonds.begin(), out.bonds.end());
   for (auto& r : out.rattlers) r = permutation[r];
   std::sort(out.rattlers.begin(), out.rattlers.end());
-  if (out.exact && out.exact->points.size() == n) {
-    for (std::size_t i = 0; i < n; ++i) out.exact->points[permutation[i]] = p.exact->points[i];
-    if (out.exact->known.size() == n) {
-      for (std::size_t i = 0; i < n; ++i) out.exact->known[permutation[i]] = p.exact->known[i];
+  if (out.sqrt3 && out.sqrt3->points.size() == n) {
+    for (std::size_t i = 0; i < n; ++i) out.sqrt3->points[permutation[i]] = p.sqrt3->points[i];
+    if (out.sqrt3->known.size() == n) {
+      for (std::size_t i = 0; i < n; ++i) out.sqrt3->known[permutation[i]] = p.sqrt3->known[i];
     }
   }
   return out;

@@ -30,8 +30,8 @@ WriteOptions with_record_digits(const PackingRecord& record, const WriteOptions&
   WriteOptions o = options;
   if (o.label.empty()) o.label = record.label;
   if (record.d.multiprecision() && o.d_digits > kLongDoubleRoundTripDigits)
-    o.exact_d = record.d.str(o.d_digits);
-  if (!precise.empty()) o.exact_points = &precise;
+    o.precise_d = record.d.str(o.d_digits);
+  if (!precise.empty()) o.precise_points = &precise;
   o.digits = std::min(o.digits, kLongDoubleRoundTripDigits);
   o.d_digits = std::min(o.d_digits, kLongDoubleRoundTripDigits);
   return o;

@@ -33,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         (void)cat.resolve_variant(c, k, "");
         (void)cat.L_of(c, k, p);
-        if (const Expression* e = cat.exact_L_of(c, k, p)) (void)e->eval(real_env(k, p));
+        if (const Expression* e = cat.closed_form_L_of(c, k, p)) (void)e->eval(real_env(k, p));
       } catch (const std::exception&) {
       }
     }

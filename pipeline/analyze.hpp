@@ -24,10 +24,10 @@ namespace tripack::pipeline {
 
 struct StageTimes {
   double construct = 0, relax = 0, bonds = 0, rigidity = 0, stress = 0, multiprecision = 0,
-         exact = 0;
+         sqrt3 = 0;
   double certificate_mp = 0;  // the multiprecision certificate (identification and certificate)
   double total() const {
-    return construct + relax + bonds + rigidity + stress + multiprecision + exact + certificate_mp;
+    return construct + relax + bonds + rigidity + stress + multiprecision + sqrt3 + certificate_mp;
   }
 };
 

@@ -22,7 +22,7 @@ namespace tripack::pipeline {
 // certified bonds and rattlers. Otherwise the geometry's bonds and rattlers must equal the
 // builder's, and the catalogue's counts apply to the builder's.
 bool BuildResult::verified() const {
-  if (!analysis || !analysis->certified() || (exact && !exact->ok)) return false;
+  if (!analysis || !analysis->certified() || (sqrt3 && !sqrt3->ok)) return false;
   const auto& precise = analysis->precise;
   if (!precise) return counts_match() && bonds_match() && rattlers_match();
   const Pattern& geometry = analysis->pattern;
@@ -58,7 +58,7 @@ PackingRecord record_of_build(const BuildResult& b) {
 }  // namespace
 
 double BuildResult::seconds() const {
-  return times.construct + polish_seconds + times.exact + times.multiprecision +
+  return times.construct + polish_seconds + times.sqrt3 + times.multiprecision +
          (analysis ? analysis->times.total() : 0.0);
 }
 
@@ -99,8 +99,8 @@ BuildResult construct_member(const Catalogue& catalogue, const BuildRequest& req
           fmt::format("polish did not converge (residual {:.3g} after {} iterations)",
                       static_cast<double>(b.polish.max_residual), b.polish.iterations));
   }
-  if (b.pattern.exact) tell_stage(job, "exact check");
-  if (b.pattern.exact) b.exact = timed(b.times.exact, [&] { return exact_check(b.pattern); });
+  if (b.pattern.sqrt3) tell_stage(job, "Q(sqrt3) check");
+  if (b.pattern.sqrt3) b.sqrt3 = timed(b.times.sqrt3, [&] { return sqrt3_check(b.pattern); });
   return b;
 }
 

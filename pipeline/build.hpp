@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/exact_check.hpp"
+#include "analysis/sqrt3_check.hpp"
 #include "constructors/catalogue.hpp"
 #include "constructors/registry.hpp"
 #include "core/options.hpp"
@@ -46,7 +46,7 @@ struct BuildResult {
   Pattern pattern;  // as constructed, polished with the builder's bonds
   PolishReport polish;
   bool polished = false;
-  std::optional<ExactCheckReport> exact;
+  std::optional<Sqrt3CheckReport> sqrt3;
   std::optional<Analysis> analysis;
   std::optional<MultiprecisionPolish> multiprecision;  // of the builder's bond system
   StageTimes times;  // construct, exact and (without analysis) multiprecision

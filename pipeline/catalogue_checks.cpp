@@ -45,9 +45,9 @@ FormulaCheck check_formula(const Catalogue& catalogue, const std::string& class_
       row.n = static_cast<long long>(b.pattern.packing.size());
       row.d_built = b.pattern.packing.d;
       std::optional<long double> L;
-      if (const Expression* exact = catalogue.exact_L_of(c, k, p)) {
-        L = exact->eval<long double>(real_env(k, p));
-        row.source = "closed form " + exact->text();
+      if (const Expression* closed_form = catalogue.closed_form_L_of(c, k, p)) {
+        L = closed_form->eval<long double>(real_env(k, p));
+        row.source = "closed form " + closed_form->text();
       } else if (auto chain = catalogue.L_of(c, k, p)) {
         L = chain;
         row.source = "chain formula " + c.L.text();
@@ -58,12 +58,12 @@ FormulaCheck check_formula(const Catalogue& catalogue, const std::string& class_
       }
       row.bonds = b.pattern.bonds.size();
       row.bonds_expected = b.bonds_expected;
-      if (b.exact) {
-        row.exact_ok = b.exact->ok;
-        row.exact_failure = b.exact->failure;
+      if (b.sqrt3) {
+        row.sqrt3_ok = b.sqrt3->ok;
+        row.sqrt3_failure = b.sqrt3->failure;
       }
       row.ok = (!L || row.relative_difference <= kFormulaTolerance) && b.counts_match() &&
-               row.exact_ok.value_or(true);
+               row.sqrt3_ok.value_or(true);
       check.all_ok = check.all_ok && row.ok;
       if (on_row) on_row(row);
       check.rows.push_back(std::move(row));
@@ -94,7 +94,7 @@ CatalogueTable catalogue_table(const Catalogue& catalogue, long k_count,
           row.counts_match = b.counts_match();
           row.geometry_match = b.bonds_match() && b.rattlers_match();
           row.certified = b.analysis && b.analysis->certified();
-          if (b.exact) row.exact_ok = b.exact->ok;
+          if (b.sqrt3) row.sqrt3_ok = b.sqrt3->ok;
           row.ok = b.analysis && b.verified();
           row.seconds = seconds_since(t0);
           table.all_ok = table.all_ok && row.ok;

@@ -30,8 +30,8 @@ struct FormulaCheckRow {
   std::size_t bonds = 0;
   std::optional<long long> bonds_expected;
   std::string source;  // "closed form ..." or "chain formula ..."
-  std::optional<bool> exact_ok;
-  std::string exact_failure;
+  std::optional<bool> sqrt3_ok;
+  std::string sqrt3_failure;
   bool ok = false;
 };
 struct FormulaCheck {
@@ -55,7 +55,7 @@ struct CatalogueTableRow {
   bool counts_match = false;    // bond count equals the catalogue's
   bool geometry_match = false;  // bonds and rattlers from the geometry equal the builder's
   bool certified = false;
-  std::optional<bool> exact_ok;
+  std::optional<bool> sqrt3_ok;
   bool ok = false;
   double seconds = 0;
 };

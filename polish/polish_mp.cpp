@@ -588,13 +588,13 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
   };
 
   // Differences of coordinates exactly (see state_bits), or to 2^-(p+7) when that is fewer bits.
-  auto exact_bits = [&](const State& st, mpfr_prec_t p) {
+  auto difference_bits = [&](const State& st, mpfr_prec_t p) {
     return std::min(state_bits(st),
                     p + static_cast<mpfr_prec_t>(std::max<mpfr_exp_t>(l_exp, 0)) + 8);
   };
 
   mpfr_prec_t r_bits = residual_bits(-64);  // the long double start: ~2^-63
-  Scratch w(r_bits, exact_bits(s, r_bits));
+  Scratch w(r_bits, difference_bits(s, r_bits));
   std::vector<Mp> r(bonds.size(), Mp(r_bits)), r_trial(bonds.size(), Mp(r_bits));
   // Magnitudes and thresholds to 64 bits: only compared (exp10 and log10 at the working
   // precision would cost more than a Newton step).
@@ -609,7 +609,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
   };
   scaled_power(target, -(digits + 8));
   auto residuals_at_working_precision = [&] {
-    w.set_prec(prec, exact_bits(s, prec));
+    w.set_prec(prec, difference_bits(s, prec));
     for (Mp& v : r) v.reset(prec);
     residuals(bonds, s, w, r, max_abs);
   };
@@ -647,7 +647,7 @@ MultiprecisionPolish polish_multiprecision(const Packing& start, const std::vect
     out.sweeps += refine(J, qr, r, tau, dz, rd, static_cast<int>(e - tau) + 20, gain);
     newton_trial(trial, s, dz, lay);
     const mpfr_prec_t next_bits = residual_bits(e);
-    w.set_prec(next_bits, exact_bits(trial, next_bits));
+    w.set_prec(next_bits, difference_bits(trial, next_bits));
     for (Mp& v : r_trial) v.reset(next_bits);
     residuals(bonds, trial, w, r_trial, max_trial);
     ++out.iterations;

@@ -31,7 +31,7 @@ CampaignRequest small_campaign(long long first, long long last, int runs, const 
   return request;
 }
 
-TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsSearch) {
+TEST(Campaign, RecordsEveryUnitOnceAndAgreesWithTheBilliardsRuns) {
   CampaignRequest request = small_campaign(10, 13, 4, "agree.db");
   const CampaignResult first = run_campaign(request, ThreadExecutor(request.threads), {});
   EXPECT_EQ(first.units, 16);
@@ -81,7 +81,7 @@ TEST(Campaign, AnInterruptedCampaignResumesWithoutRepeats) {
 }
 
 // A worker rank's run reaches rank 0 digit for digit: the stored packing is the one it found.
-TEST(Campaign, ARunRecordCrossesRanksExactly) {
+TEST(Campaign, ARunRecordCrossesRanksUnchanged) {
   store::RunRecord run;
   run.n = 3;
   run.seed = 18446744073709551615ULL;  // the largest seed survives the trip

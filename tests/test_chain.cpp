@@ -40,7 +40,7 @@ TEST(RippleChain, AnchorStepOneClosedForms) {
   EXPECT_NEAR(1 - solve_ripple_chain(9, 1).X, 6.5e-12L, 0.05e-12L);
 }
 
-TEST(RippleChain, EveryContactHoldsAndTheCornersAreExact) {
+TEST(RippleChain, EveryContactHoldsAndTheCornersHoldWithoutError) {
   for (int step : {1, 2}) {
     for (int q : {1, 2, 3, 5, 8, 13, 40}) {
       if (step == 1 && q > 12) continue;  // beyond the class's valid range

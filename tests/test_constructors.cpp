@@ -316,7 +316,7 @@ TEST(OddRipple, TheTwoModificationsSwapAtK5) {
   }
 }
 
-TEST(Classes, RecordedBondsAreExactlyTheGeometricContacts) {
+TEST(Classes, RecordedBondsEqualTheGeometricContacts) {
   // The chain family and class 7 record their bonds from the construction. Where every non-bond
   // gap is resolvable (sparse-rows k <= 10: smallest gap 2e-8 > 1e-10), contacts detected from
   // the geometry alone must be the same set.

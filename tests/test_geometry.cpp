@@ -71,7 +71,7 @@ TEST(Oler, BoundIsMetByTriangularNumbers) {
   EXPECT_NEAR(oler_delta(22, 5.574232063070546558L), 0.4221647152455112L, 1e-15);
 }
 
-TEST(Neighbours, CellGridFindsExactlyTheBruteForcePairs) {
+TEST(Neighbours, CellGridFindsTheBruteForcePairs) {
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> u(0, 10);
   for (int trial = 0; trial < 5; ++trial) {

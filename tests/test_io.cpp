@@ -28,7 +28,7 @@ PointsFile read_as(std::istream& in, const std::string& name) {
   return find_format(name)->read(in);
 }
 
-TEST(Io, RoundTripIsExactInEveryFormat) {
+TEST(Io, RoundTripKeepsEveryDigitInEveryFormat) {
   const Pattern p = sample();
   for (std::string fmt : {"txt", "csv", "json"}) {
     std::stringstream ss;
@@ -38,7 +38,7 @@ TEST(Io, RoundTripIsExactInEveryFormat) {
     const PointsFile back = read_as(ss, fmt);
     const auto& pts = back.points;
     ASSERT_EQ(pts.size(), p.packing.points.size());
-    // 21 digits round-trip a long double exactly (text, CSV, and JSON's points_exact).
+    // 21 digits round-trip a long double exactly (text, CSV, and JSON's points_decimal).
     for (std::size_t i = 0; i < pts.size(); ++i) EXPECT_EQ(pts[i], p.packing.points[i]);
     // Text and JSON state d, which packing_from_points checks against the points.
     if (fmt != "csv") {

@@ -29,7 +29,7 @@ inline const std::vector<std::string> kBuildShown{"class",
                                                   "certificate",
                                                   "certify_skipped",
                                                   "certify_error",
-                                                  "exact_check",
+                                                  "sqrt3_check",
                                                   "polish_residual",
                                                   "points",
                                                   "candidates"};
@@ -49,8 +49,9 @@ inline Tree build_tree(const BuildResult& b, const DescribeOptions& o) {
   j["bonds_expected"] = b.bonds_expected ? Tree(*b.bonds_expected) : Tree(nullptr);
   j["rattlers_expected"] = b.rattlers_expected ? Tree(*b.rattlers_expected) : Tree(nullptr);
   j["seconds"] = b.seconds();
-  j["stage_seconds"] = {
-      {"construct", b.times.construct}, {"polish", b.polish_seconds}, {"exact", b.times.exact}};
+  j["stage_seconds"] = {{"construct", b.times.construct},
+                        {"polish", b.polish_seconds},
+                        {"sqrt3_check", b.times.sqrt3}};
   if (b.analysis) {
     j["stage_seconds"].update(analysis_stage_seconds(*b.analysis));
     j["certificate"] = certificate_tree(*b.analysis);
@@ -62,7 +63,7 @@ inline Tree build_tree(const BuildResult& b, const DescribeOptions& o) {
     j["certify_skipped"] = b.certify_skipped;
     if (!b.certify_error.empty()) j["certify_error"] = b.certify_error;
   }
-  if (b.exact) j["exact_check"] = b.exact->ok;
+  if (b.sqrt3) j["sqrt3_check"] = b.sqrt3->ok;
   if (b.polished) j["polish_residual"] = static_cast<double>(b.polish.max_residual);
   j["verified"] = b.verified();  // counts, geometry, certificate and exact check all hold
   if (o.points) j["points"] = points_tree(pk);
@@ -89,11 +90,11 @@ inline void build_lines(std::ostream& out, const BuildResult& b) {
                      static_cast<double>(b.polish.max_residual), b.polish.iterations,
                      b.polish.equations, rank));
   }
-  if (b.exact)
-    line(out, "exact",
+  if (b.sqrt3)
+    line(out, "Q(sqrt3)",
          fmt::format("{} ({} bonds exactly at d, {} gaps exactly positive, in Q(sqrt3))",
-                     b.exact->ok ? "verified" : "FAILED: " + b.exact->failure,
-                     b.exact->bonds_checked, b.exact->gaps_checked));
+                     b.sqrt3->ok ? "verified" : "FAILED: " + b.sqrt3->failure,
+                     b.sqrt3->bonds_checked, b.sqrt3->gaps_checked));
   if (b.analysis) {
     const auto& precise = b.analysis->precise;
     if (precise && precise->certified) {
@@ -128,7 +129,7 @@ inline void build_lines(std::ostream& out, const BuildResult& b) {
   const auto* a = b.analysis ? &*b.analysis : nullptr;
   std::string times =
       fmt::format("construct {}, polish {}", ms(b.times.construct), ms(b.polish_seconds));
-  if (b.exact) times += ", exact " + ms(b.times.exact);
+  if (b.sqrt3) times += ", Q(sqrt3) " + ms(b.times.sqrt3);
   if (a)
     times += fmt::format(", relax {}, bonds {}, certify {}", ms(a->times.relax), ms(a->times.bonds),
                          ms(a->times.rigidity + a->times.stress));

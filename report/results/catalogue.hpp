@@ -101,7 +101,7 @@ struct View<pipeline::FormulaCheck> {
             r.d_formula ? Tree(static_cast<double>(r.relative_difference)) : Tree(nullptr)},
            {"bonds", r.bonds},
            {"bonds_expected", r.bonds_expected ? Tree(*r.bonds_expected) : Tree(nullptr)},
-           {"exact_check", r.exact_ok ? Tree(*r.exact_ok) : Tree(nullptr)},
+           {"sqrt3_check", r.sqrt3_ok ? Tree(*r.sqrt3_ok) : Tree(nullptr)},
            {"source", r.source},
            {"ok", r.ok}});
     return {Tree({{"rows", rows}, {"all_ok", c.all_ok}, {"seconds", c.seconds}}),
@@ -115,9 +115,9 @@ struct View<pipeline::FormulaCheck> {
                        "d built", "d formula", "rel.diff", "bonds", "source");
     for (const auto& r : c.rows) {
       // Closed forms are also checked exactly: every bond exactly at d, every gap exactly > 0.
-      const std::string exact_note =
-          r.exact_ok
-              ? (*r.exact_ok ? "; exact in Q(sqrt3): ok" : "; exact: FAILED " + r.exact_failure)
+      const std::string sqrt3_note =
+          r.sqrt3_ok
+              ? (*r.sqrt3_ok ? "; exact in Q(sqrt3): ok" : "; exact: FAILED " + r.sqrt3_failure)
               : "";
       out << fmt::format(
           "{:>4} {:>8} {:<10} {:>22} {:>22} {:>10} {:>10} {}{}\n", r.k, r.n, r.variant,
@@ -125,7 +125,7 @@ struct View<pipeline::FormulaCheck> {
           r.d_formula ? format_significant(*r.d_formula, 17) : "-",
           r.d_formula ? fmt::format("{:.2e}", static_cast<double>(r.relative_difference)) : "-",
           count_vs(r.bonds, r.bonds_expected),
-          (r.d_formula ? r.source : "no formula for L in the catalogue") + exact_note,
+          (r.d_formula ? r.source : "no formula for L in the catalogue") + sqrt3_note,
           r.ok ? "" : "  FAIL");
     }
   }
@@ -147,7 +147,7 @@ struct View<pipeline::CatalogueTable> {
                 {"counts_match_catalogue", r.counts_match},
                 {"geometry_matches_builder", r.geometry_match},
                 {"certified", r.certified},
-                {"exact_check", r.exact_ok ? Tree(*r.exact_ok) : Tree(nullptr)},
+                {"sqrt3_check", r.sqrt3_ok ? Tree(*r.sqrt3_ok) : Tree(nullptr)},
                 {"ok", r.ok},
                 {"seconds", r.seconds}});
       rows.push_back(x);
@@ -170,7 +170,7 @@ struct View<pipeline::CatalogueTable> {
           r.member.class_id, r.member.p ? std::to_string(r.member.p) : "", r.member.k,
           r.member.variant, r.n, format_significant(r.d, 15), format_significant(1 / r.d, 15),
           static_cast<double>(oler_delta(r.n, 1 / r.d)), r.bonds, r.rattlers,
-          r.geometry_match ? "yes" : "NO", r.certified ? (r.exact_ok ? "yes+exact" : "yes") : "NO",
+          r.geometry_match ? "yes" : "NO", r.certified ? (r.sqrt3_ok ? "yes+exact" : "yes") : "NO",
           r.seconds * 1e3, r.counts_match ? "" : "  bond count differs from the catalogue");
     out << "match: bonds and rattlers found from the geometry alone equal the builder's; "
            "certified: rigid (LP) with a strictly positive stress; exact: every bond and gap "

@@ -1,6 +1,6 @@
 // Exact coordinates for the closed-form classes. Every coordinate of Delta(k), 4Delta(k) and the
 // twin class, in disk units, lies in Q(sqrt3) with denominator 2: (p + q sqrt3) / 2, p, q integers.
-// Builders that know them fill Pattern::exact; analysis/exact_check verifies them in CGAL's exact
+// Builders that know them fill Pattern::sqrt3; analysis/sqrt3_check verifies them in CGAL's exact
 // arithmetic. Plain int64 pairs keep the bookkeeping as cheap as the long double construction.
 #pragma once
 
@@ -33,34 +33,34 @@ struct HalfSurd3 {
   }
 };
 
-struct ExactPoint {
+struct Sqrt3Point {
   HalfSurd3 x, y;
 
-  friend constexpr ExactPoint operator+(ExactPoint a, ExactPoint b) {
+  friend constexpr Sqrt3Point operator+(Sqrt3Point a, Sqrt3Point b) {
     return {a.x + b.x, a.y + b.y};
   }
-  friend constexpr ExactPoint operator-(ExactPoint a, ExactPoint b) {
+  friend constexpr Sqrt3Point operator-(Sqrt3Point a, Sqrt3Point b) {
     return {a.x - b.x, a.y - b.y};
   }
-  friend constexpr ExactPoint operator*(ExactPoint a, long long s) { return {a.x * s, a.y * s}; }
-  friend bool operator==(ExactPoint a, ExactPoint b) = default;
+  friend constexpr Sqrt3Point operator*(Sqrt3Point a, long long s) { return {a.x * s, a.y * s}; }
+  friend bool operator==(Sqrt3Point a, Sqrt3Point b) = default;
   Vec2L value() const { return {x.value(), y.value()}; }
 };
 
 // The lattice directions of geometry.hpp's Directions, exactly.
-struct ExactDirections {
-  static constexpr ExactPoint e0{{2, 0}, {0, 0}};
-  static constexpr ExactPoint e60{{1, 0}, {0, 1}};
-  static constexpr ExactPoint e120{{-1, 0}, {0, 1}};
-  static constexpr ExactPoint e180{{-2, 0}, {0, 0}};
-  static constexpr ExactPoint e240{{-1, 0}, {0, -1}};
-  static constexpr ExactPoint e300{{1, 0}, {0, -1}};
+struct Sqrt3Directions {
+  static constexpr Sqrt3Point e0{{2, 0}, {0, 0}};
+  static constexpr Sqrt3Point e60{{1, 0}, {0, 1}};
+  static constexpr Sqrt3Point e120{{-1, 0}, {0, 1}};
+  static constexpr Sqrt3Point e180{{-2, 0}, {0, 0}};
+  static constexpr Sqrt3Point e240{{-1, 0}, {0, -1}};
+  static constexpr Sqrt3Point e300{{1, 0}, {0, -1}};
 };
 
 // Disk units: min distance 1, triangle (0,0), (L,0), (L/2, L sqrt3/2).
-struct ExactDiskUnits {
+struct Sqrt3DiskUnits {
   HalfSurd3 L;
-  std::vector<ExactPoint> points;  // one per disk, in the order of Packing::points
+  std::vector<Sqrt3Point> points;  // one per disk, in the order of Packing::points
   std::vector<char> known;  // 0 where the coordinate is not exact (rattlers placed numerically)
 };
 

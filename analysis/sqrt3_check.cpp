@@ -1,4 +1,4 @@
-#include "analysis/exact_check.hpp"
+#include "analysis/sqrt3_check.hpp"
 
 // CGAL stays in this translation unit: its headers cost ~20 s to compile.
 #include <CGAL/Gmpq.h>
@@ -77,7 +77,7 @@ Surd<NT> wall4(const Twice<NT>& P, const Surd<NT>& L2, Side s) {
 }
 
 // The exact rational value of a long double: significand (<= 64 bits) times a power of 2.
-Q exact_rational(long double v) {
+Q sqrt3_rational(long double v) {
   if (v == 0) return Q(0);
   int e = 0;
   const long double m = std::frexp(std::fabs(v), &e);  // |v| = m 2^e, 1/2 <= m < 1
@@ -113,9 +113,9 @@ std::string num(double v) {
 
 class Checker {
  public:
-  explicit Checker(const Pattern& pat) : pat_(pat), ex_(*pat.exact) {}
+  explicit Checker(const Pattern& pat) : pat_(pat), ex_(*pat.sqrt3) {}
 
-  ExactCheckReport run() {
+  Sqrt3CheckReport run() {
     if (consistent() && bonds_hold() && walls_open() && pairs_open()) rep_.ok = true;
     return rep_;
   }
@@ -126,16 +126,16 @@ class Checker {
     return false;
   }
   bool known(int i) const { return ex_.known[static_cast<std::size_t>(i)] != 0; }
-  const ExactPoint& ep(int i) const { return ex_.points[static_cast<std::size_t>(i)]; }
+  const Sqrt3Point& ep(int i) const { return ex_.points[static_cast<std::size_t>(i)]; }
 
   template <class NT>
   Twice<NT> twice(int i) const {
     if (known(i)) return {surd<NT>(ep(i).x), surd<NT>(ep(i).y)};
     if constexpr (std::is_same_v<NT, Q>) {
       const Vec2L& p = du_[static_cast<std::size_t>(i)];
-      return {surd(Q(2) * exact_rational(p.x), Q(0)), surd(Q(2) * exact_rational(p.y), Q(0))};
+      return {surd(Q(2) * sqrt3_rational(p.x), Q(0)), surd(Q(2) * sqrt3_rational(p.y), Q(0))};
     }
-    throw std::logic_error("exact_check: integer path for a disk without exact coordinates");
+    throw std::logic_error("sqrt3_check: integer path for a disk without exact coordinates");
   }
 
   // The exact sign of 4 (dist^2 - 1) between disks i and j; its value in *approx on request (only
@@ -143,7 +143,7 @@ class Checker {
   CGAL::Sign pair_sign(int i, int j, double* approx = nullptr) const {
     if (known(i) && known(j)) {
       // Coefficients are below 2^61 (checked), so these int64 differences are exact.
-      const ExactPoint d = ep(i) - ep(j);
+      const Sqrt3Point d = ep(i) - ep(j);
       const Surd<Z> g = gap4(surd<Z>(d.x), surd<Z>(d.y));
       if (approx) *approx = approx_value(g);
       return CGAL::sign(g);
@@ -183,7 +183,7 @@ class Checker {
       const Vec2L p = pat_.packing.points[i] * L;
       du_[i] = p;
       if (!ex_.known[i]) continue;
-      const ExactPoint& e = ex_.points[i];
+      const Sqrt3Point& e = ex_.points[i];
       if (!small(e.x) || !small(e.y))
         return fail("disk " + std::to_string(i) + ": exact coefficients beyond 2^61");
       const Vec2L v = e.value();
@@ -269,8 +269,8 @@ class Checker {
   }
 
   const Pattern& pat_;
-  const ExactDiskUnits& ex_;
-  ExactCheckReport rep_;
+  const Sqrt3DiskUnits& ex_;
+  Sqrt3CheckReport rep_;
   std::vector<Vec2L> du_;  // disk units, long double: the candidate search
   std::vector<unsigned char> wall_bonds_;
   std::vector<std::uint64_t> pair_bonds_;
@@ -278,12 +278,12 @@ class Checker {
 
 }  // namespace
 
-ExactCheckReport exact_check(const Pattern& pattern) {
-  if (!pattern.exact) throw std::invalid_argument("exact_check: the pattern has no exact data");
+Sqrt3CheckReport sqrt3_check(const Pattern& pattern) {
+  if (!pattern.sqrt3) throw std::invalid_argument("sqrt3_check: the pattern has no Q(sqrt3) data");
   const std::size_t n = pattern.packing.size();
-  if (pattern.exact->points.size() != n || pattern.exact->known.size() != n)
-    throw std::invalid_argument("exact_check: exact data for " +
-                                std::to_string(pattern.exact->points.size()) +
+  if (pattern.sqrt3->points.size() != n || pattern.sqrt3->known.size() != n)
+    throw std::invalid_argument("sqrt3_check: exact data for " +
+                                std::to_string(pattern.sqrt3->points.size()) +
                                 " disks, packing has " + std::to_string(n));
   return Checker(pattern).run();
 }
