@@ -11,7 +11,6 @@
 #include <tuple>
 
 #include "analysis/compare.hpp"
-#include "core/conventions.hpp"
 #include "core/io.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"

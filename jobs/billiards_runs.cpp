@@ -7,7 +7,6 @@
 #include <map>
 #include <stdexcept>
 
-#include "analysis/compare.hpp"
 #include "constructors/registry.hpp"
 #include "core/ranking.hpp"
 #include "core/timing.hpp"

@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "analysis/compare.hpp"
 #include "core/io.hpp"
 #include "core/precision.hpp"
 #include "core/timing.hpp"

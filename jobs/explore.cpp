@@ -9,8 +9,8 @@
 #include <optional>
 #include <set>
 
-#include "core/conventions.hpp"
 #include "core/timing.hpp"
+#include "jobs/billiards_runs.hpp"
 #include "pipeline/catalogue_checks.hpp"
 #include "runner/runner.hpp"
 #include "search/search.hpp"

@@ -13,7 +13,6 @@
 #include "core/progress.hpp"
 #include "core/record.hpp"
 #include "jobs/accuracy.hpp"
-#include "jobs/billiards_runs.hpp"
 #include "jobs/compare.hpp"
 #include "pipeline/build.hpp"
 
