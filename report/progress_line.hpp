@@ -2,7 +2,7 @@
 // redrawn five times a second by a ticker thread from the latest report (callbacks only store it,
 // so a fast stream of reports costs nothing), with a bar and ETA when the job knows its fraction
 // or its item count. Elsewhere (a log, a batch job): one line per stage change and/or per
-// finished item, which scripts can parse (tests/campaign_soak.sh reads the campaign's).
+// finished item, which scripts can parse (tests/cli/campaign_soak.sh reads the campaign's).
 #pragma once
 
 #include <condition_variable>

@@ -4,7 +4,7 @@
 # tsan: configures the project into build-tsan/ with -fsanitize=thread (-O1 -g), builds
 #       tripack_tests and tripack, and runs the threaded tests (the threaded billiards searches,
 #       the campaigns with 2 threads, the explorer and the accuracy study's 2-thread searches)
-#       plus tests/cli_test.sh (billiards/compare/campaign --threads 2, the progress ticker
+#       plus tests/cli/cli_test.sh (billiards/compare/campaign --threads 2, the progress ticker
 #       thread on a pty) and a 2-thread `tripack campaign` interrupted by SIGINT then resumed,
 #       all with TSAN_OPTIONS=halt_on_error=1.
 # asan: configures into build-asan/ with -fsanitize=address,undefined
@@ -34,7 +34,7 @@ export CXX=${SAN_CXX:-g++} CC=${SAN_CC:-gcc}
 
 # The threaded tests: BilliardsRunsRequest (1 vs 2 threads), Campaign (2 threads), Explore (the
 # explorer's searches default to 2 threads), Accuracy.HardCases (2-thread n = 33 searches).
-tsan_filter=${TSAN_FILTER:-"BilliardsRunsRequest.*:Campaign.*:Explore.*:Accuracy.HardCases*"}
+tsan_filter=${TSAN_FILTER:-"BilliardsRuns.*:Campaign.*:Explore.*:Accuracy.HardCases*"}
 
 # configure_and_build DIR "SANITIZER FLAGS"
 configure_and_build() {
@@ -79,8 +79,8 @@ run_tsan() {
     --gtest_brief=1) || rc=1
   echo "   $((SECONDS - t0)) s"
   t0=$SECONDS
-  echo "== tsan: tests/cli_test.sh (threaded billiards, compare, campaign; progress ticker)"
-  TSAN_OPTIONS=$opts bash "$root/tests/cli_test.sh" "$dir/tripack" "$root/tests/data" || rc=1
+  echo "== tsan: tests/cli/cli_test.sh (threaded billiards, compare, campaign; progress ticker)"
+  TSAN_OPTIONS=$opts bash "$root/tests/cli/cli_test.sh" "$dir/tripack" "$root/tests/data" || rc=1
   echo "   $((SECONDS - t0)) s"
   t0=$SECONDS
   echo "== tsan: a 2-thread campaign interrupted by SIGINT (as Ctrl-C), then resumed"
@@ -110,9 +110,9 @@ run_tsan() {
   rm -f "$db" "$db-wal" "$db-shm"
   echo "   $((SECONDS - t0)) s"
   if command -v mpirun >/dev/null; then
-    echo "== tsan: tests/mpi_test.sh (rank 0's worker thread beside its MPI thread; a killed rank)"
+    echo "== tsan: tests/cli/mpi_test.sh (rank 0's worker thread beside its MPI thread; a killed rank)"
     t0=$SECONDS
-    TSAN_OPTIONS=$opts bash "$root/tests/mpi_test.sh" "$dir/tripack" || rc=1
+    TSAN_OPTIONS=$opts bash "$root/tests/cli/mpi_test.sh" "$dir/tripack" || rc=1
     echo "   $((SECONDS - t0)) s"
   fi
   report_logs "$dir" || { echo "tsan: REPORTS (above)"; rc=1; }
@@ -139,11 +139,11 @@ run_asan() {
   # its dlopen'ed components, whose frames the fast unwinder cannot even name), ~120 kB per rank
   # with no tripack frame in any stack (seen here), and MPI_Finalize does not free them.
   if command -v mpirun >/dev/null && [[ -f $dir/tests/CTestTestfile.cmake ]]; then
-    echo "== asan+ubsan: tests/mpi_test.sh (leak detection off: OpenMPI's own allocations)"
+    echo "== asan+ubsan: tests/cli/mpi_test.sh (leak detection off: OpenMPI's own allocations)"
     t0=$SECONDS
     ASAN_OPTIONS="detect_leaks=0:log_path=$dir/san-logs/asan" \
       UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:log_path=$dir/san-logs/ubsan" \
-      bash "$root/tests/mpi_test.sh" "$dir/tripack" || rc=1
+      bash "$root/tests/cli/mpi_test.sh" "$dir/tripack" || rc=1
     echo "   $((SECONDS - t0)) s"
   fi
   # GCC's UBSan runtime ignores log_path when linked beside ASan: its reports go to stderr, which

@@ -8,8 +8,8 @@ t22a.xy.txt and t22a.pck are tripack's own output (`build -o`): the reference po
 significant digits) and the record table (17). Every other file is derived from t22a.xy.txt in
 40-digit decimal arithmetic and printed with 17 significant digits (a double's round trip, what
 other people's files usually carry), except t22a.rounded6.txt (6 decimals). The t22a.bad-* files
-each carry one error (or, t22a.xyr-wrong-r.txt, one warning) that tests/test_io.cpp and
-tests/test_points.cpp expect.
+each carry one error (or, t22a.xyr-wrong-r.txt, one warning) that tests/unit/test_io.cpp and
+tests/unit/test_points.cpp expect.
 """
 import json
 import pathlib
@@ -109,8 +109,8 @@ def main():
     xy = [f"{s17(x)} {s17(y)}" for x, y in pts]
     ixy = [f"{i} {s17(x)} {s17(y)}" for i, (x, y) in enumerate(pts)]
     xyr = [f"{s17(x)} {s17(y)} {s17(r)}" for x, y in circles]
-    bad = "bad input for tests/test_io.cpp and tests/test_points.cpp: "
-    # Reader errors (tests/test_io.cpp); each names the line given in its comment.
+    bad = "bad input for tests/unit/test_io.cpp and tests/unit/test_points.cpp: "
+    # Reader errors (tests/unit/test_io.cpp); each names the line given in its comment.
     write("t22a.bad-radius-varies.txt", xyr[:9] + [xyr[9].rsplit(" ", 1)[0] + " 0.07"] + xyr[10:],
           [bad + "r on line 12 differs", "layout: x y r"])
     write("t22a.bad-radius-zero.txt", [f"{s17(x)} {s17(y)} 0" for x, y in circles],
@@ -134,7 +134,7 @@ def main():
         del objs[4]["y"]
         json.dump({"points": objs}, f, indent=0)
         f.write("\n")
-    # Geometry errors (tests/test_points.cpp).
+    # Geometry errors (tests/unit/test_points.cpp).
     write("t22a.bad-outside.txt", xy[:17] + [f"{s17(pts[17][0])} -0.001"] + xy[18:],
           [bad + "point 17 lies 1e-3 below the bottom side (unit-triangle convention)"])
     write("t22a.bad-flipped.txt", [f"{s17(x)} {s17(H - y)}" for x, y in pts],

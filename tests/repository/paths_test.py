@@ -16,7 +16,7 @@ ABSENT_ON_PURPOSE = {
     # outputs of scripts, written where the user runs them, not kept in git
     "data/build-scan.csv": "scripts/analysis/build-scan.py's default output",
     # what a test shows to be missing
-    "tests/data/atlas": "tests/exact_checker_test.sh checks the checker without it",
+    "tests/data/atlas": "tests/checker/exact_checker_test.sh checks the checker without it",
 }
 files = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True,
                        check=True).stdout.split()

@@ -1,5 +1,5 @@
 // campaign/atlas + report/results/atlas.hpp: the atlas merges a campaign's database with the
-// builders, and the committed data/atlas.csv is never below a builder. (tests/atlas_data_test.cpp
+// builders, and the committed data/atlas.csv is never below a builder. (tests/unit/atlas_data_test.cpp
 // checks the committed files themselves without tripack's code.)
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -34,7 +34,7 @@ std::filesystem::path fresh_dir(const std::string& name) {
 // For every catalogue member with n <= 200, the committed atlas's best d is at least the
 // builder's (the atlas takes every builder as a candidate; 1e-14: the builders' long double d).
 // The discovered classes' members, built only here, are also checked as Classes.* checks the
-// others (tests/member_checks.hpp).
+// others (tests/unit/member_checks.hpp).
 TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
   const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
   const auto entries =
@@ -46,8 +46,8 @@ TEST(Atlas, NoBuilderBeatsTheCommittedAtlas) {
   for (const auto& member : pipeline::class_members_up_to(catalogue, 200)) {
     // jogged-line members up to 60 disks only: all of them up to 200 cost 650 s more (2
     // threads); every member up to 300 is checked against the atlas by the atlas step and
-    // scripts/data/atlas-check.py (docs/atlas.md), and tests/test_vacancy_segment.cpp builds 81 and
-    // 110.
+    // scripts/data/atlas-check.py (docs/atlas.md), and tests/unit/test_vacancy_segment.cpp builds
+    // 81 and 110.
     if (member.class_id == "jogged-line" &&
         catalogue.n_of(catalogue.find(member.class_id), member.k, member.p) > 60)
       continue;

@@ -3,11 +3,11 @@
 # checker (checker/check_exact.sh, PARI/GP, no code shared with tripack) accepts them; copies with a
 # changed coefficient of P, a removed bond, a moved coordinate or a wrong root are rejected.
 # GL1995's closed form for n = 13 and the values 1/sqrt(3) (n = 4) are the reference polynomials.
-# Usage: tests/exact_test.sh path/to/tripack
+# Usage: tests/cli/exact_test.sh path/to/tripack
 set -u
 TRIPACK=${1:?usage: exact_test.sh path/to/tripack}
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/.." && pwd)
+root=$(cd "$here/../.." && pwd)
 CHECK=$root/checker/check_exact.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

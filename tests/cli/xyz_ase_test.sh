@@ -13,7 +13,7 @@
 # Usage: xyz_ase_test.sh path/to/tripack
 set -u
 TRIPACK=$1
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0

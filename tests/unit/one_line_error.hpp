@@ -1,4 +1,4 @@
-// Errors a user reads on one line (tests/test_plot.cpp, tests/test_diagram.cpp).
+// Errors a user reads on one line (tests/unit/test_plot.cpp, tests/unit/test_diagram.cpp).
 #pragma once
 
 #include <gtest/gtest.h>

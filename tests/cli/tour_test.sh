@@ -6,7 +6,7 @@
 # Usage: tour_test.sh path/to/tripack [SOURCE_REPOSITORY]   (default: this script's repository)
 set -u
 TRIPACK=$(realpath "$1")
-src=${2:-$(dirname "$(realpath "${BASH_SOURCE[0]}")")/..}
+src=${2:-$(dirname "$(realpath "${BASH_SOURCE[0]}")")/../..}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 git clone --quiet "$src" "$work/repo" || { echo "FAIL: git clone $src"; exit 1; }

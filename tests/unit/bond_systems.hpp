@@ -1,5 +1,5 @@
-// Small hand-made bond systems that both polishers are tested on (tests/test_polish.cpp in long
-// double, tests/test_multiprecision.cpp in MPFR).
+// Small hand-made bond systems that both polishers are tested on (tests/unit/test_polish.cpp in
+// long double, tests/unit/test_multiprecision.cpp in MPFR).
 #pragma once
 
 #include <vector>

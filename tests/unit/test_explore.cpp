@@ -37,7 +37,7 @@ const jobs::ExploreResult& small_exploration() {
     s.stress_set.clear();
     s.large_terms.clear();
     s.search_steps = 6;
-    s.accuracy = false;  // tests/test_accuracy.cpp covers it
+    s.accuracy = false;  // tests/unit/test_accuracy.cpp covers it
     return jobs::explore(catalogue(), s);
   }();
   return result;

@@ -5,7 +5,7 @@
 beyond a long double "precise" or "decimal", a closed form of L "closed_form_L", the billiards
 job "billiards runs". Comments and prose are free; names are read from the code with comments
 and string literals removed, keys and options from the string literals that are one word.
-usage: python3 tests/vocabulary_test.py [ROOT]"""
+usage: python3 tests/repository/vocabulary_test.py [ROOT]"""
 import pathlib, re, sys
 
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
@@ -14,7 +14,7 @@ FOLDERS = ["analysis", "app", "bench", "checker", "commands", "constructors", "c
            "scenes", "search", "sim", "store", "tests"]
 # Where algebraic d(n) lives: any "exact" name is its own.
 ALGEBRAIC = re.compile(r"^(exact/|checker/|pipeline/exact\.|jobs/exact_atlas\.|"
-                       r"report/results/exact\.hpp|tests/(unit/)?test_exact_algebraic\.cpp)")
+                       r"report/results/exact\.hpp|tests/unit/test_exact_algebraic\.cpp)")
 # Algebraic names used outside those files: the commands, the exact atlas, its table and rows.
 ALGEBRAIC_NAMES = {
     "exact", "Exact", "ExactAtlasCommand", "exact-atlas", "atlas-exact", "ExactRequest", "ExactRun", "ExactResult",

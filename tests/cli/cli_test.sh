@@ -489,7 +489,7 @@ if grep -qx "L          $L50" <<<"$digits_out" && grep -qx "delta(n)   $delta49"
 digits_out=$("$TRIPACK" build even-ripple --k 3 --digits 50 --json 2>&1)
 if grep -q "\"L\":\"$L50\"" <<<"$digits_out"; then
   pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: build --digits 50 --json: L"; fi
-digits_out=$("$TRIPACK" analyze "$(dirname "$0")/../data/atlas/t22a.txt" --digits 40 2>&1)
+digits_out=$("$TRIPACK" analyze "$(dirname "$0")/../../data/atlas/t22a.txt" --digits 40 2>&1)
 if grep -qx "L          ${L50:0:41}" <<<"$digits_out" &&
   grep -qx "delta(n)   0.422164715245511195769874414736866037864" <<<"$digits_out"; then
   pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAIL: analyze --digits 40: L, delta: $digits_out"; fi
@@ -511,7 +511,7 @@ fi
 # refused by analyze and by db import, and nothing is stored; a header d the points contradict
 # is a warning for analyze and a refusal for import unless asked.
 ttmp=$(mktemp -d)
-atlas22="$(dirname "$0")/../data/atlas/t22a.txt"
+atlas22="$(dirname "$0")/../../data/atlas/t22a.txt"
 { grep '^#' "$atlas22"; grep -v '^#' "$atlas22" | head -n 12; } >"$ttmp/t22a.txt"  # the header and the first 12 points
 expect_error "analyze refuses a truncated file" "n = 22 but the file holds 12 points" \
   analyze "$ttmp/t22a.txt"

@@ -8,9 +8,9 @@
 #  * the checker prints "certificate LABEL: ACCEPTED (existence, strict-local-optimum)" (proof =
 #    exact means tripack proved existence and strict local optimality) and exits 0; the
 #    coordinate files are data/atlas/LABEL.txt (format 1: <certificate dir>/../atlas).
-# Prints the wall time. Usage: tests/exact_certificates_test.sh
+# Prints the wall time. Usage: tests/checker/exact_certificates_test.sh
 set -u
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 csv=$root/data/atlas-exact.csv
 shopt -s nullglob
 # Largest first: the few certificates of tens of MB take minutes each, and started last (in name

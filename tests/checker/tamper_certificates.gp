@@ -1,7 +1,7 @@
 \\ tamper_certificates.gp -- builds the tampered (and a few valid) certificates that
-\\ tests/exact_checker_test.sh runs through checker/check_exact.sh.
+\\ tests/checker/exact_checker_test.sh runs through checker/check_exact.sh.
 \\
-\\ Usage: ROOT=<repository> OUT=<empty directory> gp -q -f tests/tamper_certificates.gp < /dev/null
+\\ Usage: ROOT=<repository> OUT=<empty directory> gp -q -f tests/checker/tamper_certificates.gp < /dev/null
 \\
 \\ For every case it writes OUT/<case>/exact/<label>.gp and the coordinate file
 \\ OUT/<case>/atlas/<label>.txt (the atlas format; a format-1 certificate finds it at
@@ -51,7 +51,7 @@ tg_del(R, s) = if(mapisdefined(R, s), mapdelete(R, s)); R;
 \\ write R in tripack's layout
 tg_write(path, R) =
 {
-  my(L = List(["\\\\ tampered or hand-made certificate written by tests/tamper_certificates.gp"]), v, s);
+  my(L = List(["\\\\ tampered or hand-made certificate written by tests/checker/tamper_certificates.gp"]), v, s);
   foreach(tg_names, s,
     if(!mapisdefined(R, s), next);
     v = mapget(R, s);
@@ -68,7 +68,7 @@ tg_dec30(N) = my(a = abs(N), f = Str(a % 10^30)); while(#f < 30, f = Str("0", f)
 tg_atlas(path, R, dline) =
 {
   my(G = tg_get(R, "given"), L);
-  L = [Str("# written by tests/tamper_certificates.gp"), Str("# n: ", #G), Str("# label: ", tg_get(R, "label")), dline];
+  L = [Str("# written by tests/checker/tamper_certificates.gp"), Str("# n: ", #G), Str("# label: ", tg_get(R, "label")), dline];
   L = concat(L, vector(#G, i, Str(tg_dec30(G[i][1] * 10^30), " ", tg_dec30(G[i][2] * 10^30))));
   foreach(G, g, foreach(g, c, if(denominator(c * 10^30) != 1, error("given not on the 10^-30 grid"))));
   tg_writefile(path, strjoin(L, "\n"));

@@ -31,7 +31,7 @@ done <"$tmp/report/packings.csv"
 check "every row's files exist ($missing missing)" [ "$missing" -eq 0 ]
 # Relative paths only: no file of the report names the directory it was written to or the
 # source tree it was built from (the report can be moved or published as it is).
-source_dir=$(cd "$(dirname "$0")/.." && pwd)
+source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 check "no absolute path in the report" \
   bash -c "! grep -rlF -e '$tmp' -e '$source_dir' '$tmp/report'"
 
@@ -48,7 +48,7 @@ csv_rows=$(($(wc -l <"$tmp/report/packings.csv") - 1))
 check "DOM lists every packing ($rows vs $csv_rows)" [ "$rows" -eq "$csv_rows" ]
 # The atlas (the project's data/atlas.csv, shown by default): its best row of every n
 # in the page with a diagram, its table and files copied, the tight/loose table.
-atlas_csv="$(dirname "$0")/../data/atlas.csv"
+atlas_csv="$(dirname "$0")/../../data/atlas.csv"
 if [ -f "$atlas_csv" ]; then
   best_rows=$(awk -F, 'NR > 1 && $2 == 1' "$atlas_csv" | wc -l)
   dom_rows=$(grep -c '<tr id="atlas-t' "$tmp/dom.html")

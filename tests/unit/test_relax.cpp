@@ -79,7 +79,7 @@ TEST(Relax, PerturbedPackingsReturnToTheSameDAndContactGraph) {
     for (long p = c.has_p ? c.p_min : 0; p <= (c.has_p ? c.p_min + 2 : 0); ++p) {
       for (long k = c.k_min; k <= c.k_min + 2 && (!c.k_max || k <= c.k_max); ++k) {
         // The discovered classes relax every vacancy segment of their lattice: above n = 150 a
-        // member costs seconds (tests/test_vacancy_segment.cpp builds larger ones).
+        // member costs seconds (tests/unit/test_vacancy_segment.cpp builds larger ones).
         if (c.claim_status == "discovered" && catalogue().n_of(c, k, p) > 150) continue;
         auto variants = catalogue().variants_at(c, k);
         if (variants.empty()) variants.push_back("");

@@ -4,7 +4,7 @@
 #     tests/data/atlas-checker, passed with --atlas) are accepted (optimum/: with both claims;
 #     not-optimum/n3_collinear.gp rejected by rigidity); without --atlas they fail provenance;
 #     t10a and t11a of data/exact are accepted as they are (format 1) and as format 2;
-#  2. the certificates written by tests/tamper_certificates.gp (one tampering per check, the
+#  2. the certificates written by tests/checker/tamper_certificates.gp (one tampering per check, the
 #     referee's wrong certificates (a)-(e) plain and disguised with a huge multiple of K, format 1
 #     and 2) each get the verdict and the named checks of their manifest line;
 #  3. tampered copies of format-1 files as they are (text edits of data/exact/t10a.gp): executable
@@ -12,14 +12,14 @@
 #  4. the wrapper: exit codes, counts, --atlas;
 #  5. when git has the commit before this change (2d4b7ef), its checker is run on the disguised
 #     certificates of section 2 and must ACCEPT them (the unsoundness they demonstrate).
-# Usage: tests/exact_checker_test.sh [path/to/check_exact.sh]
-# (default: ../checker/check_exact.sh relative to this file). Needs gp (PARI/GP).
+# Usage: tests/checker/exact_checker_test.sh [path/to/check_exact.sh]
+# (default: the repository's checker/check_exact.sh). Needs gp (PARI/GP).
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-root=$(cd "$here/.." && pwd)
-CHECK=${1:-$here/../checker/check_exact.sh}
-DATA=$here/data/exact
-ATLAS=$here/data/atlas-checker
+root=$(cd "$here/../.." && pwd)
+CHECK=${1:-$root/checker/check_exact.sh}
+DATA=$root/tests/data/exact
+ATLAS=$root/tests/data/atlas-checker
 GPBIN=${GP:-gp}
 pass=0
 fail=0
@@ -35,7 +35,7 @@ if ! command -v "$GPBIN" >/dev/null 2>&1; then echo "exact_checker: gp (PARI/GP)
 if [ ! -r "$CHECK" ]; then echo "exact_checker: checker script $CHECK not found"; exit 1; fi
 
 # check OUT RC EXPECTATIONS: the verdict and named checks (comma-separated, see
-# tests/tamper_certificates.gp): accept, accept-slo, reject, fail:X, pass:X, skip:X, note:TEXT
+# tests/checker/tamper_certificates.gp): accept, accept-slo, reject, fail:X, pass:X, skip:X, note:TEXT
 check() {
   local out=$1 rc=$2 exps=$3 e miss=""
   local IFS=','
@@ -93,7 +93,7 @@ gen=$tmp/gen
 mkdir -p "$gen"
 if ! ROOT="$root" OUT="$gen" "$GPBIN" -q -f --default parisize=64M --default parisizemax=1G \
   "$here/tamper_certificates.gp" </dev/null >"$tmp/gen.log" 2>&1 || ! grep -q '^tamper_certificates: ' "$tmp/gen.log"; then
-  bad "tests/tamper_certificates.gp failed:"$'\n'"$(cat "$tmp/gen.log")"
+  bad "tests/checker/tamper_certificates.gp failed:"$'\n'"$(cat "$tmp/gen.log")"
 fi
 ngen=0
 nfloat=0

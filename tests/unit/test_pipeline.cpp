@@ -52,7 +52,7 @@ TEST(Pipeline, AnalyzeOfBuildFindsTheBuildersBondsAndCertifiesEveryClass) {
     for (long p = c.has_p ? c.p_min : 0; p <= (c.has_p ? c.p_min + 2 : 0); ++p) {
       for (long k = c.k_min; k <= 8 && (!c.k_max || k <= c.k_max); ++k) {
         // The discovered classes relax every vacancy segment of their lattice: above n = 150 a
-        // member costs seconds (tests/test_vacancy_segment.cpp builds larger ones).
+        // member costs seconds (tests/unit/test_vacancy_segment.cpp builds larger ones).
         if (c.claim_status == "discovered" && catalogue().n_of(c, k, p) > 150) continue;
         auto variants = catalogue().variants_at(c, k);
         if (variants.empty()) variants.push_back("");
@@ -277,7 +277,7 @@ TEST(Pipeline, BadPointSetsAreRejectedWithOneLine) {
   rejects({{0.1L, 0.1L}, {0.5L, 0.2L}}, 3, "expected 3 points");
   rejects({{0.1L, 0.1L}}, std::nullopt, "at least 2");
   rejects({{0.1L, 0.1L}, {0.9L, 0.9L}}, std::nullopt, "outside");
-  // Beyond the 1e-6 rounding tolerance (tests/test_points.cpp covers the tolerated side).
+  // Beyond the 1e-6 rounding tolerance (tests/unit/test_points.cpp covers the tolerated side).
   rejects({{0.1L, 0.1L}, {0.5L, -1e-5L}}, std::nullopt, "outside");
   rejects({{0.3L, 0.1L}, {0.3L, 0.1L}, {0.5L, 0.2L}}, std::nullopt, "coincide");
 }
