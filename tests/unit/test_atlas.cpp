@@ -1,6 +1,6 @@
 // campaign/atlas + report/results/atlas.hpp: the atlas merges a campaign's database with the
-// builders, and the committed data/atlas.csv is never below a builder. (tests/unit/atlas_data_test.cpp
-// checks the committed files themselves without tripack's code.)
+// builders, and the committed data/atlas.csv is never below a builder.
+// (tests/unit/atlas_data_test.cpp checks the committed files themselves without tripack's code.)
 #include <gtest/gtest.h>
 #include <unistd.h>
 
