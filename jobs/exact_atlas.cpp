@@ -144,7 +144,11 @@ pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& req
   const fs::path dir =
       request.certificates.empty() ? fs::path() : writable_directory(request.certificates);
   // Class members as built (polished, not certified: exact_of_packing analyses them itself).
-  std::vector<std::pair<std::string, Packing>> members;
+  struct Member {
+    std::string name, file_stem;  // "four-delta k=3", "four-delta-k3" (docs/conventions.md)
+    Packing packing;
+  };
+  std::vector<Member> members;
   if (!request.class_id.empty()) {
     if (request.k.second < request.k.first)
       throw std::invalid_argument("exact --class needs --k A..B");
@@ -153,8 +157,9 @@ pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& req
     for (long long k = request.k.first; k <= request.k.second; ++k) {
       const auto built = pipeline::build_and_certify(
           catalogue, {request.class_id, static_cast<long>(k), request.p, ""}, build);
-      members.emplace_back(pipeline::member_name(built.pattern.provenance),
-                           built.record.pattern.packing);
+      members.push_back({pipeline::member_name(built.pattern.provenance),
+                         pipeline::member_file_stem(built.pattern.provenance),
+                         built.record.pattern.packing});
     }
   }
   pipeline::ExactRun run;
@@ -164,13 +169,15 @@ pipeline::ExactRun run_exact(const Catalogue& catalogue, const ExactRequest& req
     run.packings.push_back(
         from_files
             ? pipeline::exact_of_file(request.files[i], request.exact)
-            : pipeline::exact_of_packing(members[i].second, members[i].first, {}, request.exact));
+            : pipeline::exact_of_packing(members[i].packing, members[i].name, {}, request.exact));
     const auto& r = run.packings.back();
     if (dir.empty() || !r.configuration || !r.configuration->proven) continue;
-    // A class member's name ("four-delta k=3") as a label the checker accepts: "four-delta_k3".
-    std::string label;
-    for (char ch : r.label)
-      if (ch != '=') label += ch == ' ' ? '_' : ch;
+    // The certificate's label, which the checker takes as a file name: a member's file stem
+    // ("four-delta-k3"); a file's label without spaces or '='.
+    std::string label = from_files ? "" : members[i].file_stem;
+    if (from_files)
+      for (char ch : r.label)
+        if (ch != '=') label += ch == ' ' ? '_' : ch;
     std::string coordinates;
     if (from_files) {
       coordinates = fs::relative(fs::weakly_canonical(request.files[i]), fs::weakly_canonical(dir))

@@ -63,7 +63,7 @@ mkdir -p "$tmp/members"
 out=$(bash "$CHECK" "$tmp/members"/*.gp 2>&1)
 if [ $? -eq 0 ] && grep -qx '2 certificates: 2 accepted, 0 rejected' <<<"$out" &&
   [ "$(grep -c '^cert_format = 2;' "$tmp/members"/*.gp | awk -F: '{s += $2} END {print s}')" = 2 ] &&
-  [ -f "$tmp/members/four-delta_k2.txt" ]; then ok; else
+  [ -f "$tmp/members/four-delta-k2.txt" ]; then ok; else
   bad "the member certificates (format 2) should be accepted:"$'\n'"$(grep -E 'FAIL|certificates' <<<"$out")"; fi
 
 # The 4Delta(k) packings as built, k = 1..50 (n = 4 .. 5100): P equals the minimal polynomial of
