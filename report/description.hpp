@@ -42,6 +42,16 @@ void write_description(std::ostream& out, const Description& description,
 // After a result's own text view: its fields the view did not print, as "name value" lines.
 void write_fields_not_shown(std::ostream& out, const Description& description);
 
+// The result as one table, what every tabular writer writes: one line per element of the declared
+// rows (one line when none are declared), every leaf of the tree a column named by its dotted path
+// ("certificate.rigid", "chains.0.seed"; a list of scalars one cell, space-separated), the row's
+// own leaves first, then the rest of the result on every line. Nothing is dropped.
+struct ResultTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> lines;
+};
+ResultTable result_table(const Description& description);
+
 // A scalar as text: strings as they are, null as "", numbers and booleans as JSON writes them.
 std::string scalar_text(const Tree& value);
 
