@@ -19,7 +19,7 @@ check "explore exits 0" [ $? -eq 0 ]
 for f in index.html delta.svg delta.png delta.pdf delta.csv delta.gp packings.csv packings.json compare.csv classes.csv; do
   check "report has $f" [ -s "$tmp/report/$f" ]
 done
-check "explore says where the report is" grep -q "report: $tmp/report/index.html" "$tmp/out.txt"
+check "explore says where the report is" grep -qE "^report +$tmp/report/index.html\$" "$tmp/out.txt"
 # Every packing row names a coordinate file and its diagram (one PNG per packing) that exist.
 missing=0
 while IFS=, read -r n rank label cls p k variant d L delta bonds ratt cert source secs file; do
