@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <ostream>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 namespace tripack::report {
@@ -92,20 +93,18 @@ ResultTable result_table(const Description& description) {
   collect_leaves(context, "", context_leaves);
   std::vector<Leaves> lines;
   ResultTable table;
+  std::unordered_map<std::string, std::size_t> column;  // a name's place in the header
   for (const auto& row : rows) {
     Leaves line;
     collect_leaves(row, "", line);
     line.insert(line.end(), context_leaves.begin(), context_leaves.end());
     for (const auto& [name, cell] : line)
-      if (std::find(table.header.begin(), table.header.end(), name) == table.header.end())
-        table.header.push_back(name);
+      if (column.emplace(name, table.header.size()).second) table.header.push_back(name);
     lines.push_back(std::move(line));
   }
   for (const auto& line : lines) {
     std::vector<std::string> cells(table.header.size());
-    for (const auto& [name, cell] : line)
-      cells[static_cast<std::size_t>(std::find(table.header.begin(), table.header.end(), name) -
-                                     table.header.begin())] = cell;
+    for (const auto& [name, cell] : line) cells[column.at(name)] = cell;
     table.lines.push_back(std::move(cells));
   }
   return table;
