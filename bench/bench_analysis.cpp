@@ -16,6 +16,7 @@
 #include "analysis/relax.hpp"
 #include "constructors/builders.hpp"
 #include "pipeline/analyze.hpp"
+#include "pipeline/build.hpp"
 #include "polish/polish.hpp"
 #include "polish/polish_mp.hpp"
 #include "sim/billiards.hpp"
@@ -230,6 +231,18 @@ BENCHMARK(BM_StressLP) TRIPACK_SIZES;
 BENCHMARK(BM_Polish15) TRIPACK_SIZES;
 BENCHMARK(BM_Polish50) TRIPACK_SIZES;
 BENCHMARK(BM_CertifyPipeline) TRIPACK_SIZES;
+
+// `build --n N` whole (every member containing N built, the best certified), the work of
+// tripack.build(n=N) in Python: bench/python_overhead.py compares the two in one run.
+void BM_BuildBestForN(benchmark::State& state) {
+  const Catalogue catalogue = Catalogue::load(Catalogue::default_path());
+  for (auto _ : state) {
+    const auto b = pipeline::build_best_for_n(catalogue, state.range(0), {});
+    if (!b.best.record.certified) state.SkipWithError("not certified");
+    benchmark::DoNotOptimize(b.best.record.d);
+  }
+}
+BENCHMARK(BM_BuildBestForN)->Arg(22)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace tripack

@@ -15,8 +15,6 @@ namespace tripack::commands {
 
 namespace {
 
-inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
-
 // -o FILE of build and analyze: the format by extension, the coordinates with --digits
 // significant digits (never fewer than a long double's round trip, so no file is rounded).
 WriteOptions file_digits(int digits) {
@@ -25,22 +23,13 @@ WriteOptions file_digits(int digits) {
   return options;
 }
 
-// A class member: the class, --k, --p, --variant.
-void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
-  auto& c = o.option("class", member.class_id, "class id (see 'tripack classes')");
-  if (class_required) c.required();
-  o.option("--k", member.k, "class index k").shown_default("");
-  o.option("--p", member.p, "matrix row p").range(1, 1e9);
-  o.option("--variant", member.variant, "variant (e.g. rattler, cavity-1, full)");
-}
-
 class Build : public Command {
  public:
   static constexpr CommandInfo kInfo{"build", "Construct, polish and certify a class member", true,
                                      "nothing was built"};
 
  private:
-  BuildRequest member{"", kUnsetK, 0, ""};
+  BuildRequest member{"", pipeline::kUnsetK, 0, ""};
   long long n = 0;  // --n: the best builder for n
   pipeline::BuildSettings settings;
   std::string output;
@@ -49,7 +38,7 @@ class Build : public Command {
 
  public:
   void declare(OptionList& o) override {
-    declare_member(o, member, false);
+    pipeline::declare_member(o, member, false);
     o.option("--n", n,
              "number of disks: build every catalogue member and variant containing n and certify "
              "the densest (no class, --k, --p); the candidates are listed");
@@ -65,15 +54,7 @@ class Build : public Command {
     const JobContext job = job_context(c, progress.callback());
     pipeline::BestBuild result;
     try {
-      if (n) {
-        if (!member.class_id.empty() || member.k != kUnsetK || member.p)
-          throw std::invalid_argument("build --n N takes no class, --k or --p");
-        result = pipeline::build_best_for_n(catalogue, n, settings, job);
-      } else {
-        if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
-        if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
-        result.best = pipeline::build_and_certify(catalogue, member, settings, job);
-      }
+      result = pipeline::build_requested(catalogue, member, n, settings, job);
     } catch (const Cancelled&) {
       claim_ending(c);
       progress.finish();
@@ -148,7 +129,7 @@ class Draw : public Command {
 
  private:
   std::string what;  // a points file, or a class id
-  BuildRequest member{"", kUnsetK, 0, ""};
+  BuildRequest member{"", pipeline::kUnsetK, 0, ""};
   std::optional<Convention> convention;
   std::string output;
   report::DiagramOptions options;
@@ -180,7 +161,7 @@ class Draw : public Command {
                  format_significant(result.analysis.pattern.packing.d, 15),
                  result.analysis.stress.forces};
     } else {
-      if (member.k == kUnsetK)
+      if (member.k == pipeline::kUnsetK)
         throw std::invalid_argument("draw: '" + what + "' is not a file; a class needs --k K");
       member.class_id = what;
       const auto b = pipeline::build_and_certify(load_catalogue(c), member, {});

@@ -227,24 +227,24 @@ const ClassInfo& Catalogue::find(const std::string& id) const {
     if (c.id == id) return c;
   std::string ids;
   for (const auto& c : classes_) ids += (ids.empty() ? "" : ", ") + c.id;
-  throw CatalogueError("unknown class '" + id + "' (known: " + ids + ")");
+  throw MemberError("unknown class '" + id + "' (known: " + ids + ")");
 }
 
 void Catalogue::check_parameters(const ClassInfo& c, long k, long p) const {
   if (k < c.k_min)
-    throw CatalogueError(c.id + ": k = " + std::to_string(k) +
-                         " is below the valid range k >= " + std::to_string(c.k_min) +
-                         (c.k_min_reason.empty() ? "" : " (" + c.k_min_reason + ")"));
+    throw MemberError(c.id + ": k = " + std::to_string(k) +
+                      " is below the valid range k >= " + std::to_string(c.k_min) +
+                      (c.k_min_reason.empty() ? "" : " (" + c.k_min_reason + ")"));
   if (c.k_max && k > c.k_max)
-    throw CatalogueError(c.id + ": k = " + std::to_string(k) +
-                         " is above the valid range k <= " + std::to_string(c.k_max) +
-                         (c.k_max_reason.empty() ? "" : " (" + c.k_max_reason + ")"));
+    throw MemberError(c.id + ": k = " + std::to_string(k) +
+                      " is above the valid range k <= " + std::to_string(c.k_max) +
+                      (c.k_max_reason.empty() ? "" : " (" + c.k_max_reason + ")"));
   if (c.has_p && p == 0)
-    throw CatalogueError(c.id + " needs --p (p >= " + std::to_string(c.p_min) + ")");
+    throw MemberError(c.id + " needs --p (p >= " + std::to_string(c.p_min) + ")");
   if (c.has_p && p < c.p_min)
-    throw CatalogueError(c.id + ": p = " + std::to_string(p) +
-                         " is below the valid range p >= " + std::to_string(c.p_min));
-  if (!c.has_p && p != 0) throw CatalogueError(c.id + " takes no --p");
+    throw MemberError(c.id + ": p = " + std::to_string(p) +
+                      " is below the valid range p >= " + std::to_string(c.p_min));
+  if (!c.has_p && p != 0) throw MemberError(c.id + " takes no --p");
 }
 
 long long Catalogue::n_of(const ClassInfo& c, long k, long p) const {
@@ -330,22 +330,21 @@ std::vector<std::string> Catalogue::variants_at(const ClassInfo& c, long k) cons
 std::string Catalogue::resolve_variant(const ClassInfo& c, long k,
                                        const std::string& requested) const {
   if (c.variants.empty()) {
-    if (!requested.empty())
-      throw CatalogueError(c.id + " has no variants (got '" + requested + "')");
+    if (!requested.empty()) throw MemberError(c.id + " has no variants (got '" + requested + "')");
     return "";
   }
   if (requested.empty()) {  // the default, else the first variant that exists at this k
     for (const auto& vi : c.variants)
       if (vi.is_default && k >= vi.k_min) return vi.id;
     const auto here = variants_at(c, k);
-    if (here.empty()) throw CatalogueError(c.id + " has no variant at k = " + std::to_string(k));
+    if (here.empty()) throw MemberError(c.id + " has no variant at k = " + std::to_string(k));
     return here.front();
   }
   if (variant_info(c, k, requested)) return requested;
   std::string list;
   for (const auto& v : variants_at(c, k)) list += (list.empty() ? "" : ", ") + v;
-  throw CatalogueError(c.id + " at k = " + std::to_string(k) + " has no variant '" + requested +
-                       "' (valid: " + list + ")");
+  throw MemberError(c.id + " at k = " + std::to_string(k) + " has no variant '" + requested +
+                    "' (valid: " + list + ")");
 }
 
 namespace {

@@ -14,6 +14,11 @@ namespace tripack {
 struct CatalogueError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// A member the catalogue does not have (an unknown class; k, p or a variant outside the class's
+// range): the request's fault, not the catalogue's (the Python module raises ValueError for it).
+struct MemberError : CatalogueError {
+  using CatalogueError::CatalogueError;
+};
 
 struct VariantInfo {
   std::string id;  // "rattler", "full", or a family "cavity-m" with m in [m_min, m_max]

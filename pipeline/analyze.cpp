@@ -539,11 +539,16 @@ std::string FileAnalysis::value_string(int wanted) const {
 }
 
 FileAnalysis analyze_file(const AnalyzeRequest& request) {
+  const auto start = Clock::now();
+  PointsFile file = read_packing_file(request.file);
+  return analyze_points(std::move(file), request, seconds_since(start));
+}
+
+FileAnalysis analyze_points(PointsFile file, const AnalyzeRequest& request, double read_seconds) {
   FileAnalysis result;
   result.file = request.file;
   result.digits = request.digits;
   const auto start = Clock::now();
-  PointsFile file = read_packing_file(request.file);
   result.layout = file.layout;
   PointsReading reading = packing_from_points(
       std::move(file), request.convention,
@@ -552,7 +557,7 @@ FileAnalysis analyze_file(const AnalyzeRequest& request) {
   result.convention = reading.convention;
   result.label = reading.label;
   result.warnings = std::move(reading.warnings);
-  result.read_seconds = seconds_since(start);
+  result.read_seconds = read_seconds + seconds_since(start);
   AnalysisOptions options;
   options.digits = request.digits;
   options.progress = request.progress;

@@ -14,6 +14,7 @@
 #include "analysis/interior_relax.hpp"
 #include "analysis/relax.hpp"
 #include "core/conventions.hpp"
+#include "core/io.hpp"
 #include "core/options.hpp"
 #include "core/packing.hpp"
 #include "core/progress.hpp"
@@ -162,5 +163,9 @@ struct FileAnalysis {
   double seconds() const { return read_seconds + analysis.times.total(); }
 };
 FileAnalysis analyze_file(const AnalyzeRequest& request);
+// The same on points already read (request.file only names them; the Python module's arrays):
+// converted from their convention, checked against expected_n, analysed.
+FileAnalysis analyze_points(PointsFile points, const AnalyzeRequest& request,
+                            double read_seconds = 0);
 
 }  // namespace tripack::pipeline

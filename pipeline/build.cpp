@@ -229,4 +229,18 @@ std::string member_name(const Provenance& member) {
   return s;
 }
 
+BestBuild build_requested(const Catalogue& catalogue, const BuildRequest& member, long long n,
+                          const BuildSettings& settings, const JobContext& job) {
+  if (n) {
+    if (!member.class_id.empty() || member.k != kUnsetK || member.p)
+      throw std::invalid_argument("build --n N takes no class, --k or --p");
+    return build_best_for_n(catalogue, n, settings, job);
+  }
+  if (member.class_id.empty()) throw std::invalid_argument("build needs a class (or --n N)");
+  if (member.k == kUnsetK) throw std::invalid_argument("build needs --k K");
+  BestBuild result;
+  result.best = build_and_certify(catalogue, member, settings, job);
+  return result;
+}
+
 }  // namespace tripack::pipeline

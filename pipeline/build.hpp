@@ -36,6 +36,18 @@ struct BuildSettings {
   }
 };
 
+inline constexpr long kUnsetK = -1000000000;  // --k not given (0 and negatives are user errors)
+
+// A class member's options: the class, --k, --p, --variant (the commands' and the Python
+// module's).
+inline void declare_member(OptionList& o, BuildRequest& member, bool class_required) {
+  auto& c = o.option("class", member.class_id, "class id (see 'tripack classes')");
+  if (class_required) c.required();
+  o.option("--k", member.k, "class index k").shown_default("");
+  o.option("--p", member.p, "matrix row p").range(1, 1e9);
+  o.option("--variant", member.variant, "variant (e.g. rattler, cavity-1, full)");
+}
+
 // The whole pipeline on a class member: construct, polish the builder's bond system, verify
 // closed forms exactly, then certify from the geometry alone and compare with what the builder
 // intended.
@@ -96,6 +108,11 @@ struct BestBuild {
 // largest d with `settings`. Throws std::runtime_error when no class contains n.
 BestBuild build_best_for_n(const Catalogue& catalogue, long long n, const BuildSettings& settings,
                            const JobContext& job = {});
+
+// `tripack build`: the member asked for, or with n > 0 the best for n. Throws
+// std::invalid_argument for a request that is neither (no class, no --k) or both.
+BestBuild build_requested(const Catalogue& catalogue, const BuildRequest& member, long long n,
+                          const BuildSettings& settings, const JobContext& job = {});
 
 std::string member_name(const Provenance& member);  // "matrix k=2 p=7 variant=..."
 // The same in a file name: "matrix-k2-p7-..." (docs/conventions.md, "Names").

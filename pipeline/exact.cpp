@@ -85,12 +85,20 @@ ExactResult exact_of_file(const std::string& file, const ExactSettings& settings
 
 ExactResult exact_of_packing(const Packing& packing, const std::string& label,
                              const std::vector<std::array<std::string, 2>>& given,
-                             const ExactSettings& settings) {
+                             const ExactSettings& settings, const JobContext& job) {
   if (settings.digits < 40) throw std::invalid_argument("exact: --digits must be at least 40");
   if (settings.digits > 20000)
     throw std::invalid_argument(
         "exact: --digits must be at most 20000 (LLL at 2D digits beyond that takes hours)");
   ExactResult result;
+  const auto stage = [&](const char* name) {
+    throw_if_cancelled(job.cancel);
+    Progress progress;
+    progress.stage = name;
+    progress.item = label;
+    job.report(progress);
+  };
+  stage("analysis");
   const Analysis analysis = analyze_packing(packing, {});
   result.pattern = analysis.pattern;
   result.n = static_cast<int>(analysis.pattern.packing.size());
@@ -100,6 +108,7 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     result.reason = "the packing is not certified: " + analysis.status();
     return result;
   }
+  stage("polish");
   const auto start = Clock::now();
   MultiprecisionPolish polish =
       polish_multiprecision(analysis.pattern.packing, analysis.pattern.bonds,
@@ -149,6 +158,7 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
   for (int D : ladder) {
     input.digits = D;
     if (!result.polynomial.found) {
+      stage("polynomial");
       const auto t1 = Clock::now();
       result.polynomial = exact::minimal_polynomial(polish.d, D, settings.max_degree);
       result.seconds_polynomial += seconds_since(t1);
@@ -161,6 +171,7 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
       result.reason = "statement (I) not attempted";
       return result;
     }
+    stage("existence");
     const auto t2 = Clock::now();
     result.configuration = exact::prove_existence(input, result.polynomial);
     result.seconds_existence += seconds_since(t2);
@@ -169,6 +180,7 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
       continue;
     }
     result.proof = "existence";
+    stage("optimality");
     const auto t3 = Clock::now();
     result.optimality =
         exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);

@@ -61,10 +61,12 @@ struct ExactRun {
 ExactResult exact_of_file(const std::string& file, const ExactSettings& settings);
 
 // A packing (e.g. a class member as built); `given`: its coordinates as text when they have 27+
-// decimals (else the certificate's given points are the polish's).
+// decimals (else the certificate's given points are the polish's). Progress: each stage's start
+// (analysis, polish, polynomial, existence, optimality); cancelled, it throws Cancelled at the
+// next stage (a stage itself, an LLL of minutes, is not interrupted).
 ExactResult exact_of_packing(const Packing& packing, const std::string& label,
                              const std::vector<std::array<std::string, 2>>& given,
-                             const ExactSettings& settings);
+                             const ExactSettings& settings, const JobContext& job = {});
 
 // The given points as a coordinate file in the atlas's layout ("# n:", "# label:", "# d:" and
 // "x y" lines with 30 decimals), for a certificate to name when no packing file was read.

@@ -313,8 +313,10 @@ Vec2 diagram_position(long double d, const Vec2L& point, const DiagramOptions& o
   return {l.x(point.x), l.y(point.y)};
 }
 
-void draw_packing(const Diagram& diagram, const std::string& path, const DiagramOptions& options) {
-  const Format format = format_of(path);
+namespace {
+
+// The drawing's bytes in `format` (SVG with its surfaces renumbered: the same bytes every time).
+std::string diagram_bytes(const Diagram& diagram, Format format, const DiagramOptions& options) {
   validate(diagram, options);
   const Layout l = layout_for(static_cast<double>(diagram.pattern.packing.d), options.width_pixels);
 
@@ -350,7 +352,17 @@ void draw_packing(const Diagram& diagram, const std::string& path, const Diagram
     check(cairo_surface_write_to_png_stream(surface.get(), append, &bytes), "PNG encoding failed");
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), "cannot finish the surface");
-  write_whole_file(path, format == Format::Svg ? renumber_svg_surfaces(bytes) : bytes);
+  return format == Format::Svg ? renumber_svg_surfaces(bytes) : bytes;
+}
+
+}  // namespace
+
+void draw_packing(const Diagram& diagram, const std::string& path, const DiagramOptions& options) {
+  write_whole_file(path, diagram_bytes(diagram, format_of(path), options));
+}
+
+std::string diagram_svg(const Diagram& diagram, const DiagramOptions& options) {
+  return diagram_bytes(diagram, Format::Svg, options);
 }
 
 }  // namespace tripack::report

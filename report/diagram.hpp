@@ -28,6 +28,8 @@ struct Diagram {
 // extension or an unwritable path. Same input, same bytes (PDF creation date fixed).
 void draw_packing(const Diagram& diagram, const std::string& path,
                   const DiagramOptions& options = {});
+// The same drawing as SVG text, for a caller that shows it itself (a notebook's _repr_svg_).
+std::string diagram_svg(const Diagram& diagram, const DiagramOptions& options = {});
 
 // Where a unit-triangle point lands in the drawing of a packing with diameter d (pixels for
 // PNG, points for SVG and PDF; y down): for checking a picture, or for image maps over it.

@@ -28,6 +28,10 @@ PKGS=(
   libflint-arb-dev     # exact d(n): ball arithmetic for root isolation and the embedding checks
   libfplll-dev         # exact d(n): the LLL of integer relations (5x FLINT's at degree 64, 4,000 digits)
   pari-gp              # the independent checker of exact certificates (checker/, shares no code)
+  python3-dev pybind11-dev  # the Python module (python/): pybind11 binds the library for /usr/bin/python3
+  python3-numpy python3-matplotlib  # the module's arrays and Packing.draw()
+  python3-pytest       # the Python module's test suite, run by ctest
+  jupyter-nbconvert python3-ipykernel  # the example notebook docs/examples/tour.ipynb runs headless in the tests
   python3-ase          # a real client of the field reads our extended XYZ back in the tests (ASE, as OVITO users script)
 )
 missing=()

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job: install dependencies, build, then explore with the defaults: every class member up
+# The main job: install dependencies, build (and put the Python module on /usr/bin/python3's path:
+# scripts/install-python.sh), then explore with the defaults: every class member up
 # to n = 300 built and certified, the basin-hopping search for small n (docs/search.md), billiards
 # runs for the matrix stress set, compared, with the atlas (data/atlas.csv) beside them, and the
 # report written to explore's default out/report (open out/report/index.html). Extra arguments go
@@ -8,4 +9,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
+bash scripts/install-python.sh
 ./build/tripack explore "$@"

@@ -10,7 +10,7 @@ import pathlib, re, sys
 
 root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".")
 FOLDERS = ["analysis", "app", "bench", "checker", "commands", "constructors", "core", "exact",
-           "formats", "fuzz", "jobs", "patterns", "pipeline", "polish", "report", "runner",
+           "formats", "fuzz", "jobs", "patterns", "pipeline", "polish", "python", "report", "runner",
            "scenes", "search", "sim", "store", "tests"]
 # Where algebraic d(n) lives: any "exact" name is its own.
 ALGEBRAIC = re.compile(r"^(exact/|checker/|pipeline/exact\.|jobs/exact_atlas\.|"
@@ -21,7 +21,7 @@ ALGEBRAIC_NAMES = {
     "ExactSettings", "ExactAtlas", "ExactAtlasSettings", "ExactAtlasResult", "ExactAtlasRow",
     "ExactConfiguration", "run_exact", "build_exact_atlas", "read_exact_atlas",
     "exact_atlas_table_format", "exact_of_file", "exact_of_packing", "exact_cells",
-    "exact_atlas", "exact_test", "exact_certificates", "exact_checker",
+    "exact_atlas", "exact_test", "exact_certificates", "exact_checker", "exact_row", "exact_call",
     # Retired, still read from files written before the rename (docs/conventions.md, "Names").
     "points_exact",
 }
