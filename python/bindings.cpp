@@ -270,6 +270,8 @@ PYBIND11_MODULE(_tripack, m) {
   // names the subclasses. Bad input keeps Python's ValueError with the CLI's one-line message.
   static py::exception<std::runtime_error> error(m, "Error", PyExc_RuntimeError);
   static py::exception<std::runtime_error> data_error(m, "DataError", error.ptr());
+  error.attr("__doc__") = "A failure of tripack's own (not of the input).";
+  data_error.attr("__doc__") = "tripack's installed data (the catalogue) cannot be read.";
   py::register_exception_translator([](std::exception_ptr failure) {
     try {
       if (failure) std::rethrow_exception(failure);

@@ -218,3 +218,26 @@ def test_write_reads_back(tmp_path):
     p.write(str(path))
     again = tripack.analyze(np.loadtxt(path))
     assert abs(again.d - p.d) < 1e-15
+
+
+def test_the_stub_names_everything_the_compiled_core_has():
+    import ast
+
+    import tripack._tripack as core
+
+    path = os.path.join(os.path.dirname(tripack.__file__), "_tripack.pyi")
+    stub = ast.parse(open(path).read())
+    top = {n.name for n in stub.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    assert top == {n for n in dir(core) if not n.startswith("_")}
+    packing = next(n for n in stub.body if isinstance(n, ast.ClassDef) and n.name == "PackingCore")
+    members = {n.name for n in packing.body if isinstance(n, ast.FunctionDef)}
+    assert members == {n for n in dir(core.PackingCore) if not n.startswith("_")}
+
+
+def test_every_public_name_has_a_docstring():
+    for name in tripack.__all__:
+        assert (getattr(tripack, name).__doc__ or "").strip(), name
+    for name in dir(tripack.Packing):
+        member = getattr(tripack.Packing, name)
+        if not name.startswith("_") and callable(member):
+            assert (member.__doc__ or "").strip(), name

@@ -48,8 +48,8 @@ def test_other_threads_run_during_a_long_call():
     counter.join()
     during = [t for t in ticks if started < t < ended]
     # Sleeping 10 ms a tick, the thread ticks close to 150 times in 1.5 s when the call releases
-    # the GIL; a call that held it would let it tick only at the start and the end.
-    assert len(during) > 75, len(during)
+    # the GIL (a loaded machine, fewer); a call that held it would let it tick none while it ran.
+    assert len(during) >= 10, len(during)
 
 
 def test_an_exception_in_the_progress_callback_stops_the_call():
