@@ -49,6 +49,19 @@ ck_claim_slo = 0;
 \\ statements), 1005 the end of the file.
 
 ck_maxdepth = 32;                  \\ nesting of [ ] and ( )
+\\ Bounds on every expression, so that no file keeps the parser busy for minutes (a product of
+\\ 20,000 factors, 1,000 chained 2^-1000000): the factors of one product and the terms of one sum
+\\ (the 280 certificates of data/exact have at most 3 and 57), and every value built, at most
+\\ 2^24 bits (2 MB; their largest values are about 100 kB) and of degree at most 4096.
+ck_maxfactors = 1000;
+ck_maxterms = 10000;
+ck_maxbits = 2^24;
+ck_maxdegree = 4096;
+\\ and all of them together, in proportion to the file (a sum of 100,000 powers of 2^24 bits
+\\ each is within the bounds above but would take hours): every value built counts its bytes
+\\ once, at most 64 per byte of the file plus 128 MB (t62a.gp, 49 MB, builds 670 MB of values).
+ck_maxbuilt = 2^27;
+ck_built = 0;
 ck_names1 = Set(["cert_format", "label", "n", "P", "d_low", "d_high", "K", "t_low", "t_high", \
   "d_in_K", "sqrt3_in_K", "points", "rattlers", "bonds", "given", "given_tolerance", "claims"]);
 ck_names_all = setunion(ck_names1, Set(["stress", "coordinates_file"]));
@@ -150,6 +163,18 @@ ck_atom() =
   ck_perr("expected a number, x, t or '('");
 }
 
+\\ a value built by the parser within the bounds above, or a one-line error
+ck_bounded(v) =
+{
+  if(type(v) == "t_POL" && poldegree(v) > ck_maxdegree,
+    ck_perr(Str("a value of degree ", poldegree(v), " (at most ", ck_maxdegree, ")")));
+  my(bytes = sizebyte(v));
+  if(bytes * 8 > ck_maxbits, ck_perr(Str("a value of ", bytes, " bytes (at most 2^24 bits)")));
+  ck_built += bytes;
+  if(ck_built > ck_maxbuilt, ck_perr(Str("the values built exceed ", ck_maxbuilt, " bytes in all (64 per byte of the file + 2^27)")));
+  v;
+}
+
 \\ power := atom [ ^ [+|-] NUMBER ]
 ck_pow() =
 {
@@ -166,32 +191,33 @@ ck_pow() =
     if(e < 0, ck_perr("a negative exponent is only allowed on a rational number"));
     if(e * max(1, poldegree(a)) > 4096, ck_perr("power of a polynomial of degree > 4096")));
   ck_ti++;
-  a^e;
+  ck_bounded(a^e);
 }
 
 \\ product := power ( (*|/) power )* ; the divisor must be a non-zero rational
 ck_prod() =
 {
-  my(a = ck_pow(), k, b);
+  my(a = ck_pow(), k, b, factors = 1);
   while(1,
     k = ck_tk[ck_ti];
-    if(k == 42, ck_ti++; b = ck_pow(); a = a * b,
-       k == 47, ck_ti++; b = ck_pow(); if(!ck_israt(b) || b == 0, ck_ti--; ck_perr("division by zero or by a non-constant")); a = a / b,
-       break));
+    if(k != 42 && k != 47, break);
+    factors++; if(factors > ck_maxfactors, ck_perr(Str("a product of more than ", ck_maxfactors, " factors")));
+    if(k == 42, ck_ti++; b = ck_pow(); a = ck_bounded(a * b),
+       ck_ti++; b = ck_pow(); if(!ck_israt(b) || b == 0, ck_ti--; ck_perr("division by zero or by a non-constant")); a = ck_bounded(a / b)));
   a;
 }
 
 \\ sum := [+|-] product ( (+|-) product )*
 ck_sum() =
 {
-  my(k = ck_tk[ck_ti], a, b);
+  my(k = ck_tk[ck_ti], a, b, terms = 1);
   if(k == 43 || k == 45, ck_ti++);
   a = ck_prod(); if(k == 45, a = -a);
   while(1,
     k = ck_tk[ck_ti];
-    if(k == 43, ck_ti++; b = ck_prod(); a = a + b,
-       k == 45, ck_ti++; b = ck_prod(); a = a - b,
-       break));
+    if(k != 43 && k != 45, break);
+    terms++; if(terms > ck_maxterms, ck_perr(Str("a sum of more than ", ck_maxterms, " terms")));
+    ck_ti++; b = ck_prod(); a = ck_bounded(if(k == 43, a + b, a - b)));
   a;
 }
 
@@ -413,10 +439,12 @@ ck_read() =
   L = iferr(readstr(ck_file), E, print("FAIL read: cannot read ", ck_file, ": ", ck_errmsg(E));
     print("certificate ", ck_file, ": REJECTED (unreadable file)"); quit(1));
   s = Vecsmall(strjoin(L, "\n"));
+  ck_maxbuilt = 64 * #s + 2^27;
   r = iferr(ck_parse(s), E, print("FAIL read: ", ck_file, ": ", ck_errmsg(E), "; the certificate is data, read by the grammar of checker/README.md, never executed");
     print("certificate ", ck_file, ": REJECTED (not a certificate in the data format)"); quit(1));
   ck_V = r;
-  ck_report(1, "read", Str(ck_file, ": ", #s, " bytes parsed as data (", #ck_tk, " tokens, ", getabstime() - t0, " ms)"));
+  ck_report(1, "read", Str(ck_file, ": ", #s, " bytes parsed as data (", #ck_tk, " tokens, ", getabstime() - t0, " ms, ",
+    ck_built, " bytes of values built)"));
 }
 
 ck_check_variables() =
@@ -521,13 +549,16 @@ ck_check_coordinates() =
 
 ck_check_claims() =
 {
-  my(has = 0);
+  my(has = 0, unknown = [c | c <- c_claims, c != "existence" && c != "strict-local-optimum"]);
   foreach(c_claims, c,
     if(c == "existence", has = 1,
-       c == "strict-local-optimum", ck_claim_slo = 1,
-       ck_note(Str("claim \"", if(ck_printable(c), c, "(unprintable)"), "\": not checked (unknown to this checker)"))));
+       c == "strict-local-optimum", ck_claim_slo = 1));
   if(!ck_claim_slo && mapisdefined(ck_V, "stress"),
     ck_note("stress is assigned but \"strict-local-optimum\" is not claimed: the stress is not checked"));
+  \\ An unknown claim is a rejection: ACCEPTED beside a claim nobody checked would read as its proof.
+  if(#unknown,
+    return(ck_report(0, "claims", Str("claim \"", if(ck_printable(unknown[1]), ck_short(unknown[1]), "(unprintable)"),
+      "\" is unknown to this checker, which checks \"existence\" and \"strict-local-optimum\" only"))));
   ck_report(has, "claims", Str(if(has, "\"existence\" (statement I) claimed and checked below", "the certificate does not claim \"existence\""),
     if(ck_claim_slo, "; \"strict-local-optimum\" (statement II) claimed and checked after it", "")));
 }
@@ -535,6 +566,8 @@ ck_check_claims() =
 \\ --- provenance: the atlas coordinate file ---------------------------------------------------
 \\ format 2: coordinates_file, relative to the certificate's directory, with basename LABEL.txt;
 \\ format 1: DIR/LABEL.txt, DIR = CHECK_ATLAS_DIR (check_exact.sh --atlas) or <cert dir>/../atlas.
+\\ Strict mode (an atlas directory given): a format-2 certificate's coordinates_file must hold the
+\\ very lines of DIR/LABEL.txt, which is then the file read; a certificate cannot bring its own.
 \\ The file: header lines "# n: N", "# label: L", "# d: D" (other "#" lines ignored), then one
 \\ line "X Y" per point, decimals with the same number q of digits after the point.
 
@@ -578,6 +611,8 @@ ck_read_atlas(path) =
   L = iferr(readstr(path), E, error(Str("cannot read the coordinates file ", path)));
   for(li = 1, #L,
     v = Vecsmall(L[li]);
+    \\ a file written on Windows: its lines end in CR LF (readstr drops the LF)
+    if(#v && v[#v] == 13, v = v[1 .. #v - 1]; L[li] = Strchr(v));
     if(#v == 0, next);
     if(v[1] == 35,
       \\ "# key: value"
@@ -608,12 +643,18 @@ ck_read_atlas(path) =
 
 ck_check_provenance_file() =
 {
-  my(path, A, e = List(), bound, badg = List(), qq);
+  my(path, A, e = List(), bound, badg = List(), qq, atlas, mine, theirs);
   ck_prov_ok = 0;
   path = if(c_format == 2,
     if(ck_basename(c_cfile) != Str(c_label, ".txt"), listput(e, Str("coordinates_file ", c_cfile, " is not named ", c_label, ".txt")));
     Str(ck_dirname(ck_file), "/", c_cfile),
     Str(if(!(ck_atlas_opt === 0), ck_atlas_opt, Str(ck_dirname(ck_file), "/../atlas")), "/", c_label, ".txt"));
+  if(c_format == 2 && !(ck_atlas_opt === 0) && #e == 0,
+    atlas = Str(ck_atlas_opt, "/", c_label, ".txt");
+    mine = iferr(readstr(path), E, 0); theirs = iferr(readstr(atlas), E, 0);
+    if(theirs === 0, listput(e, Str("strict mode: the atlas has no ", atlas)),
+       !(mine === theirs), listput(e, Str("strict mode: coordinates_file ", c_cfile, " is not the atlas's ", atlas))));
+  if(c_format == 2 && !(ck_atlas_opt === 0), path = Str(ck_atlas_opt, "/", c_label, ".txt"));
   ck_prov_path = path;
   if(#e, return(ck_report(0, "provenance", strjoin(Vec(e), "; "))));
   A = iferr(ck_read_atlas(path), E, return(ck_report(0, "provenance", ck_errmsg(E))));

@@ -6,8 +6,8 @@
 #    has its certificate data/exact/LABEL.gp;
 #  * the row's polynomial, root_low and root_high are the certificate's P, d_low and d_high;
 #  * the checker prints "certificate LABEL: ACCEPTED (existence, strict-local-optimum)" (proof =
-#    exact means tripack proved existence and strict local optimality) and exits 0; the
-#    coordinate files are data/atlas/LABEL.txt (format 1: <certificate dir>/../atlas).
+#    exact means tripack proved existence and strict local optimality) and exits 0, in strict
+#    mode (--atlas data/atlas): every certificate's coordinate file is the atlas's LABEL.txt.
 # Prints the wall time. Usage: tests/checker/exact_certificates_test.sh
 set -u
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -45,7 +45,7 @@ while read -r line; do problem "$line"; done <"$logs/csv-mismatch"
 
 start=$(date +%s)
 printf '%s\n' "${certificates[@]}" |
-  xargs -P 2 -I{} sh -c 'bash "$1/checker/check_exact.sh" "$2" >"$3/$(basename "$2" .gp).log" 2>&1' _ "$root" {} "$logs"
+  xargs -P 2 -I{} sh -c 'bash "$1/checker/check_exact.sh" --atlas "$1/data/atlas" "$2" >"$3/$(basename "$2" .gp).log" 2>&1' _ "$root" {} "$logs"
 wall=$(( $(date +%s) - start ))
 
 accepted=0

@@ -160,6 +160,36 @@ rd_sed backslash_op 's/^d_in_K = 1\/3;/d_in_K = 1\\3;/'
 rd_sed deep_nesting "s/^rattlers = \[\];/rattlers = $(printf '[%.0s' $(seq 40))$(printf ']%.0s' $(seq 40));/"
 rd_sed poly_power 's/^d_in_K = 1\/3;/d_in_K = (t + 1)^5000;/'
 f=$(mk unreadable); rm -f "$f"; nread=$((nread + 1)); expect "read: unreadable file" reject,fail:read "$f"
+# expressions that would keep gp busy for minutes or hours: each rejected by one of the parser's
+# bounds ("FAIL read", one line) well within a time limit of 10 s
+# bounded NAME VARIABLE COMMAND...: t10a.gp with VARIABLE's one-line assignment replaced by one
+# whose value COMMAND prints (too long for a sed argument)
+bounded() {
+  local name=$1 var=$2 f
+  shift 2
+  f=$(mk "$name")
+  grep -v "^$var = " "$f" >"$f.tmp"
+  { cat "$f.tmp"; printf '%s = ' "$var"; "$@"; printf ';\n'; } >"$f"
+  rm -f "$f.tmp"
+  nread=$((nread + 1))
+  expect "bounded: $name, within --time-limit 10" reject,fail:read --time-limit 10 "$f"
+}
+bounded product_20000 d_in_K sh -c 'printf "(t + 1)*%.0s" $(seq 19999); printf "(t + 1)"'
+bounded chained_powers given_tolerance sh -c 'printf "2^-1000000*%.0s" $(seq 999); printf "2^-1000000"'
+bounded sum_of_powers d_in_K sh -c 'printf "(t + 1)^3000 + %.0s" $(seq 2000); printf "1"'
+bounded sum_12000 d_in_K sh -c 'printf "1 + %.0s" $(seq 12000); printf "1"'
+# a NUL byte: gp's readstr ends the line there, so the checker would read d_high as the text before
+# it while grep, an editor or Python show the text after it too
+f=$(mk nul); LC_ALL=C sed -i 's/\(d_high = [^;]*\);/\1\x00 + 1;/' "$f"
+if LC_ALL=C grep -qaP '\x00' "$f"; then expect "a NUL byte in the certificate" reject,fail:text "$f"; else bad "the NUL test file has no NUL byte"; fi
+f=$(mk latin1); printf 'label_note = "caf\351";\n' >>"$f"; expect "a non-ASCII byte" reject,fail:text "$f"
+# the time limit ends in a rejection: t62a (the largest real certificate, ~20 s) given 2 s
+out=$(bash "$CHECK" --time-limit 2 "$root/data/exact/t62a.gp" 2>&1); rc=$?
+if [ "$rc" -eq 1 ] && grep -q '^FAIL time:' <<<"$out" && grep -q 'REJECTED (time)' <<<"$out"; then ok; else
+  bad "t62a with --time-limit 2 (rc=$rc): $(tail -n 3 <<<"$out")"; fi
+# coordinate files written on Windows (CR LF) read as the same lines
+f=$(mk crlf); sed -i 's/$/\r/' "${f%/exact/t10a.gp}/atlas/t10a.txt"
+expect "t10a with a CR LF coordinate file" accept-slo,pass:provenance "$f"
 
 # provenance
 pv() { nprov=$((nprov + 1)); expect "provenance: $1" reject,fail:provenance "$2"; }
@@ -188,6 +218,16 @@ expect "format 1 with coordinates_file" reject,fail:format "$f"
 f=$(mk f3); sedit "$f" 's/^cert_format = 1;/cert_format = 3;/'; expect "cert_format = 3" reject,fail:format "$f"
 f=$(mk f2_ok); sedit "$f" 's/^cert_format = 1;/cert_format = 2; coordinates_file = "..\/atlas\/t10a.txt";/'
 expect "t10a as format 2" accept-slo,pass:provenance "$f"
+# strict mode (--atlas DIR): a format-2 certificate's coordinate file must be DIR/LABEL.txt's
+f=$(mk strict_own); d=${f%/exact/t10a.gp}; mkdir -p "$d/own"
+{ echo "# my own copy"; cat "$d/atlas/t10a.txt"; } >"$d/own/t10a.txt"
+sedit "$f" 's/^cert_format = 1;/cert_format = 2; coordinates_file = "..\/own\/t10a.txt";/'
+expect "format 2 naming its own copy, no --atlas" accept-slo,pass:provenance "$f"
+nprov=$((nprov + 1))
+expect "strict: format 2 naming its own copy, --atlas DIR" reject,fail:provenance --atlas "$d/atlas" "$f"
+f=$(mk strict_f2); sedit "$f" 's/^cert_format = 1;/cert_format = 2; coordinates_file = "..\/atlas\/t10a.txt";/'
+expect "strict: format 2 naming ../atlas/t10a.txt, --atlas that directory" accept-slo,pass:provenance --atlas "${f%/exact/t10a.gp}/atlas" "$f"
+expect "strict: format 2, an --atlas without t10a.txt" reject,fail:provenance --atlas "$ATLAS" "$f"
 # --atlas: the certificate alone in a directory without ../atlas
 mkdir -p "$tmp/txt/alone/x"; cp "$root/data/exact/t10a.gp" "$tmp/txt/alone/x/t10a.gp"
 expect "t10a without its atlas directory" reject,fail:provenance "$tmp/txt/alone/x/t10a.gp"

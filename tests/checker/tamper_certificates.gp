@@ -238,7 +238,7 @@ fx("bond_index", "n4_centre", "reject,fail:bond-indices", "bond index out of ran
 {fx("no_pair", "n3_corners", "reject,fail:d-attained", "no disk bond at all",
   R -> tg_set(R, "bonds", [[1, -1], [1, -2], [2, -1], [2, -3], [3, -2], [3, -3]]));}
 fx("claims", "n3_corners", "reject,fail:claims", "claims without existence", R -> tg_set(R, "claims", ["strict-local-optimum"]));
-{fx("claim_unknown", "n4_centre", "accept,note:claim \"global-optimum\": not checked", "an unknown claim is noted, not checked",
+{fx("claim_unknown", "n4_centre", "reject,fail:claims", "an unknown claim is rejected, not passed with a note",
   R -> tg_set(R, "claims", ["existence", "global-optimum"]));}
 
 \\ statement (II)
