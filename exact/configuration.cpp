@@ -53,9 +53,11 @@ struct Combination {
 };
 using Candidates = std::vector<std::array<const arb_struct*, 2>>;
 
+// `reduced`: the basis's reduced rows kept across calls with the same basis (flint::ReducedBasis),
+// or none: each relation found by one LLL of its own.
 std::optional<Combination> combination_of(const Candidates& values,
                                           const std::function<Balls(int, slong)>& basis, int digits,
-                                          int largest) {
+                                          int largest, flint::ReducedBasis* reduced = nullptr) {
   const slong prec = flint::bits_for(digits), prec2 = flint::bits_for(2 * digits);
   const Balls balls = basis(0, prec), balls2 = basis(1, prec2);
   std::vector<int> ladder;
@@ -71,7 +73,9 @@ std::optional<Combination> combination_of(const Candidates& values,
       for (const auto& b : balls) row.push_back(b->value);
       const int scale = use - 10;
       double used = 0;
-      auto relation = flint::integer_relation(row, scale, flint::bits_for(use), used);
+      auto relation = reduced ? reduced->relation(values[v][0], {row.begin() + 1, row.end()}, scale,
+                                                  flint::bits_for(use), used)
+                              : flint::integer_relation(row, scale, flint::bits_for(use), used);
       if (!relation || relation->front() == "0" || used > 0.9 * scale) continue;
       arb_zero(sum.value);
       for (std::size_t i = 0; i < relation->size(); ++i) {
@@ -727,7 +731,7 @@ class CoordinateSearch {
     for (int half = 0; k0_.tower && half < 2; ++half) {
       const auto c = combination_of(
           candidates(v, v2), [&](int pass, slong p) { return k0_basis(pass, p, half); }, g_.digits,
-          largest);
+          largest, &k0_half_[half]);
       if (!c) continue;
       std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
       std::copy(c->coefficients.begin(), c->coefficients.end(),
@@ -735,8 +739,8 @@ class CoordinateSearch {
       return k0_of(c->candidate == 1 ? unscaled(e) : e);
     }
     const auto c = combination_of(
-        candidates(v, v2), [&](int pass, slong p) { return k0_basis(pass, p); }, g_.digits,
-        largest);
+        candidates(v, v2), [&](int pass, slong p) { return k0_basis(pass, p); }, g_.digits, largest,
+        &k0_full_);
     if (!c) return std::nullopt;
     return k0_of(c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients);
   }
@@ -754,7 +758,7 @@ class CoordinateSearch {
           }
           return basis;
         },
-        g_.digits, largest);
+        g_.digits, largest, &l_basis_);
     if (!c) return std::nullopt;
     const auto e = c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients;
     const auto half = e.begin() + static_cast<std::ptrdiff_t>(e.size() / 2);
@@ -764,6 +768,7 @@ class CoordinateSearch {
   // Takes w = v as the extension's generator: w^2 = -(alpha w + beta) from the relation among
   // [w^2, w K0-basis, K0-basis]. False (and no extension) when there is no such relation.
   bool extend_by(const arb_t v, const arb_t v2) {
+    l_basis_.clear();  // a new w: a new basis of L
     arb_set(w_.value, v);
     arb_set(w2_.value, v2);
     Arb square, square2;
@@ -843,6 +848,9 @@ class CoordinateSearch {
   Arb w_, w2_;
   bool extended_ = false;
   RationalPolynomial alpha_, beta_;
+  // Each basis's reduced rows, kept for every coordinate looked for against it: Q(d) and
+  // sqrt3 Q(d) in the tower, the whole K0, and L (renewed with each w).
+  flint::ReducedBasis k0_half_[2], k0_full_, l_basis_;
 };
 
 // A rattler's coordinate: its given centred place, as a rational of 40 digits.

@@ -41,21 +41,20 @@ void set_decimal(arb_t x, const std::string& text, int digits, slong prec) {
   arb_add_error(x, error.value);
 }
 
-std::optional<std::vector<std::string>> integer_relation(
-    const std::vector<const arb_struct*>& values, int scale_digits, slong prec,
-    double& relation_digits) {
-  const auto k = static_cast<slong>(values.size());
-  fmpz_mat_t lattice;
-  fmpz_mat_init(lattice, k, k + 1);
+namespace {
+
+// round(10^scale_digits * value).
+void scaled_integer(fmpz_t out, const arb_struct* value, int scale_digits, slong prec) {
   Fmpz scale;
   power_of_ten(scale.value, static_cast<ulong>(scale_digits));
   Arb scaled;
-  for (slong i = 0; i < k; ++i) {
-    fmpz_one(fmpz_mat_entry(lattice, i, i));
-    arb_mul_fmpz(scaled.value, values[static_cast<std::size_t>(i)], scale.value, prec);
-    arf_get_fmpz(fmpz_mat_entry(lattice, i, k), arb_midref(scaled.value), ARF_RND_NEAR);
-  }
-  reduce_rows(lattice);
+  arb_mul_fmpz(scaled.value, value, scale.value, prec);
+  arf_get_fmpz(out, arb_midref(scaled.value), ARF_RND_NEAR);
+}
+
+// The relation in the first row of a reduced lattice of k rows (identity part first); clears it.
+std::optional<std::vector<std::string>> first_row_relation(fmpz_mat_t lattice, slong k,
+                                                           double& relation_digits) {
   std::vector<std::string> coefficients;
   bool zero = true;
   Fmpz height;
@@ -71,6 +70,58 @@ std::optional<std::vector<std::string>> integer_relation(
       static_cast<double>(k) *
       (fmpz_is_zero(height.value) ? 0.0 : static_cast<double>(fmpz_sizeinbase(height.value, 10)));
   return coefficients;
+}
+
+}  // namespace
+
+std::optional<std::vector<std::string>> integer_relation(
+    const std::vector<const arb_struct*>& values, int scale_digits, slong prec,
+    double& relation_digits) {
+  const auto k = static_cast<slong>(values.size());
+  fmpz_mat_t lattice;
+  fmpz_mat_init(lattice, k, k + 1);
+  for (slong i = 0; i < k; ++i) {
+    fmpz_one(fmpz_mat_entry(lattice, i, i));
+    scaled_integer(fmpz_mat_entry(lattice, i, k), values[static_cast<std::size_t>(i)], scale_digits,
+                   prec);
+  }
+  reduce_rows(lattice);
+  return first_row_relation(lattice, k, relation_digits);
+}
+
+std::optional<std::vector<std::string>> ReducedBasis::relation(
+    const arb_struct* value, const std::vector<const arb_struct*>& basis, int scale_digits,
+    slong prec, double& relation_digits) {
+  const auto m = static_cast<slong>(basis.size()), k = m + 1;
+  fmpz_mat_struct* rows = nullptr;
+  for (auto& [digits, reduced] : reduced_)
+    if (digits == scale_digits) rows = &reduced;
+  if (!rows) {
+    reduced_.emplace_back(scale_digits, fmpz_mat_struct{});
+    rows = &reduced_.back().second;
+    fmpz_mat_init(rows, m, m + 1);
+    for (slong i = 0; i < m; ++i) {
+      fmpz_one(fmpz_mat_entry(rows, i, i));
+      scaled_integer(fmpz_mat_entry(rows, i, m), basis[static_cast<std::size_t>(i)], scale_digits,
+                     prec);
+    }
+    reduce_rows(rows);
+  }
+  // The reduced basis rows (their identity part in columns 1..m), then the value's row.
+  fmpz_mat_t lattice;
+  fmpz_mat_init(lattice, k, k + 1);
+  for (slong i = 0; i < m; ++i)
+    for (slong j = 0; j <= m; ++j)
+      fmpz_set(fmpz_mat_entry(lattice, i, j + 1), fmpz_mat_entry(rows, i, j));
+  fmpz_one(fmpz_mat_entry(lattice, m, 0));
+  scaled_integer(fmpz_mat_entry(lattice, m, k), value, scale_digits, prec);
+  reduce_rows(lattice);
+  return first_row_relation(lattice, k, relation_digits);
+}
+
+void ReducedBasis::clear() {
+  for (auto& [digits, reduced] : reduced_) fmpz_mat_clear(&reduced);
+  reduced_.clear();
 }
 
 void poly_from_strings(fmpz_poly_t poly, const std::vector<std::string>& coefficients) {
