@@ -52,6 +52,18 @@ void scaled_integer(fmpz_t out, const arb_struct* value, int scale_digits, slong
   arf_get_fmpz(out, arb_midref(scaled.value), ARF_RND_NEAR);
 }
 
+// Initialises `lattice` to [I | round(10^scale_digits * values)], k x (k + 1).
+void knapsack_lattice(fmpz_mat_t lattice, const std::vector<const arb_struct*>& values,
+                      int scale_digits, slong prec) {
+  const auto k = static_cast<slong>(values.size());
+  fmpz_mat_init(lattice, k, k + 1);
+  for (slong i = 0; i < k; ++i) {
+    fmpz_one(fmpz_mat_entry(lattice, i, i));
+    scaled_integer(fmpz_mat_entry(lattice, i, k), values[static_cast<std::size_t>(i)], scale_digits,
+                   prec);
+  }
+}
+
 // The relation in the first row of a reduced lattice of k rows (identity part first); clears it.
 std::optional<std::vector<std::string>> first_row_relation(fmpz_mat_t lattice, slong k,
                                                            double& relation_digits) {
@@ -79,12 +91,7 @@ std::optional<std::vector<std::string>> integer_relation(
     double& relation_digits) {
   const auto k = static_cast<slong>(values.size());
   fmpz_mat_t lattice;
-  fmpz_mat_init(lattice, k, k + 1);
-  for (slong i = 0; i < k; ++i) {
-    fmpz_one(fmpz_mat_entry(lattice, i, i));
-    scaled_integer(fmpz_mat_entry(lattice, i, k), values[static_cast<std::size_t>(i)], scale_digits,
-                   prec);
-  }
+  knapsack_lattice(lattice, values, scale_digits, prec);
   reduce_rows(lattice);
   return first_row_relation(lattice, k, relation_digits);
 }
@@ -99,12 +106,7 @@ std::optional<std::vector<std::string>> ReducedBasis::relation(
   if (!rows) {
     reduced_.emplace_back(scale_digits, fmpz_mat_struct{});
     rows = &reduced_.back().second;
-    fmpz_mat_init(rows, m, m + 1);
-    for (slong i = 0; i < m; ++i) {
-      fmpz_one(fmpz_mat_entry(rows, i, i));
-      scaled_integer(fmpz_mat_entry(rows, i, m), basis[static_cast<std::size_t>(i)], scale_digits,
-                     prec);
-    }
+    knapsack_lattice(rows, basis, scale_digits, prec);
     reduce_rows(rows);
   }
   // The reduced basis rows (their identity part in columns 1..m), then the value's row.
