@@ -1,9 +1,7 @@
 #include "python/keyword_options.hpp"
 
 #include <charconv>
-#include <cstdlib>
 #include <stdexcept>
-#include <type_traits>
 
 #include "core/option_values.hpp"
 
@@ -35,15 +33,7 @@ template <class T>
 T parse_number(const std::string& cli_name, const std::string& text) {
   T value{};
   const char* end = text.data() + text.size();
-  std::from_chars_result r{};
-  if constexpr (std::is_floating_point_v<T>) {
-    char* stop = nullptr;
-    value = static_cast<T>(std::strtod(text.c_str(), &stop));
-    r.ptr = stop;
-    r.ec = text.empty() ? std::errc::invalid_argument : std::errc{};
-  } else {
-    r = std::from_chars(text.data(), end, value);
-  }
+  const auto r = std::from_chars(text.data(), end, value);
   if (r.ec != std::errc{} || r.ptr != end)
     throw std::invalid_argument(cli_name + ": Value " + text + " could not be converted");
   return value;
