@@ -73,7 +73,7 @@ class Packing:
       points_decimal  the coordinates with every digit known, as (x, y) strings;
       d            the diameter, a float; d_decimal: every digit known, a decimal.Decimal;
       bonds        (m, 2) int64 array of contacts, (i, j) for two disks and (i, -1 - side) for a
-                   disk on a side (0: bottom, 1: right, 2: left), as in tripack's files;
+                   disk on a side (0: bottom, 1: left, 2: right), as in tripack's files;
       rattlers     int array of the disks held by no contact;
       forces       the stress certificate's force per bond (empty when there is none);
       certified    whether the packing is certified locally optimal (docs/certified.md);
@@ -192,8 +192,8 @@ class Packing:
     def _contact_points(self) -> np.ndarray:
         """Where each bond touches: the midpoint of two disks, or a disk's foot on its side."""
         p, out = self.points, []
-        # The sides' inward unit normals: bottom, right, left.
-        normals = np.array([(0.0, 1.0), (-_HEIGHT, -0.5), (_HEIGHT, -0.5)])
+        # The sides' inward unit normals, by side as the bonds number them: bottom, left, right.
+        normals = np.array([(0.0, 1.0), (_HEIGHT, -0.5), (-_HEIGHT, -0.5)])
         for a, b in self.bonds:
             if b >= 0:
                 out.append((p[a] + p[b]) / 2)

@@ -46,6 +46,15 @@ def test_packing_arrays_have_their_shapes_and_dtypes():
     assert len(walls) and set(walls[:, 1]) <= {-1, -2, -3}
     disks = p.bonds[p.bonds[:, 1] >= 0]
     assert np.all(disks[:, 0] < disks[:, 1]) and np.all(disks[:, 1] < p.n)
+    # A wall bond's disk lies on its side (0 bottom y = 0, 1 left y = sqrt3 x, 2 right
+    # y = sqrt3 (1 - x)), and the drawing's contact dot is r beyond it, outside the triangle.
+    s3 = math.sqrt(3)
+    distance_to = [lambda q: q[1], lambda q: (s3 * q[0] - q[1]) / 2, lambda q: (s3 * (1 - q[0]) - q[1]) / 2]
+    dots = p._contact_points()
+    for (a, b), dot in zip(p.bonds, dots):
+        if b < 0:
+            assert abs(distance_to[-1 - b](p.points[a])) < 1e-15, (a, b)
+            assert abs(distance_to[-1 - b](dot) + p.d / 2) < 1e-15, (a, b)
     # Every disk-disk bond is a contact at distance d.
     lengths = np.linalg.norm(p.points[disks[:, 0]] - p.points[disks[:, 1]], axis=1)
     assert np.max(np.abs(lengths - p.d)) < 1e-14
