@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "exact/flint_tools.hpp"
+#include "exact/number_field.hpp"
 
 namespace tripack::exact {
 
@@ -700,8 +701,9 @@ using Element = std::array<RationalPolynomial, 2>;
 // coordinate outside K0, its equation w^2 + alpha w + beta = 0 found with alpha, beta in K0).
 class CoordinateSearch {
  public:
-  CoordinateSearch(const Generators& g, const BaseField& k0, const MinimalPolynomial& d_poly)
-      : g_(g), k0_(k0), q_of_d_(d_poly.polynomial) {
+  CoordinateSearch(const Generators& g, const BaseField& k0, const MinimalPolynomial& d_poly,
+                   const IntegerPolynomial& k0_field)
+      : g_(g), k0_(k0), q_of_d_(d_poly.polynomial), p_(d_poly.polynomial), k0_field_(k0_field) {
     // mu = P'(d): an element v of K0 is also looked for as v mu, whose coefficients in d^a (and
     // sqrt3 d^a) have far fewer digits (for an algebraic integer d, mu times the ring of integers
     // lies in Z[d]; t39a's x_1: 16 digits against 56, docs/exact.md), and then divided by mu
@@ -743,6 +745,30 @@ class CoordinateSearch {
         &k0_full_);
     if (!c) return std::nullopt;
     return k0_of(c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients);
+  }
+
+  // v in K0 as a root of its minimal polynomial over Q (PARI's nfroots), for a coordinate whose
+  // coefficients in K0's basis have more digits than a relation can find at D digits (t126a's
+  // x_51: 108 digits in d's powers, its minimal polynomial over Q 33; docs/exact.md,
+  // "Coordinates"). In the tower, v and v / sqrt 3 are tried in Q(d) (degree m) before v in K0.
+  std::optional<RationalPolynomial> by_minimal_polynomial(const arb_t v2) {
+    const int m = g_.m;
+    Arb scaled;
+    for (int part = 0; part < (k0_.tower ? 2 : 1); ++part) {
+      if (part == 0)
+        arb_set(scaled.value, v2);
+      else
+        arb_div(scaled.value, v2, g_.s2.value, g_.prec2);
+      const auto r = root_matching(scaled.value, p_, g_.d2.value, m);
+      if (!r) continue;
+      if (!k0_.tower) return r;
+      std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
+      std::copy(r->coefficients.begin(), r->coefficients.end(),
+                e.begin() + static_cast<std::ptrdiff_t>(part * m));
+      return k0_of(e);
+    }
+    if (!k0_.tower) return std::nullopt;
+    return root_matching(v2, k0_field_, k0_.t2.value, k0_.k);
   }
 
   // v = a + b w with a, b in K0.
@@ -826,6 +852,38 @@ class CoordinateSearch {
     return out;
   }
 
+  // The root in Q[t]/(field) of v's minimal polynomial over Q (degree <= `degree`, found from
+  // 250, 500, ... up to D digits and confirmed from twice as many) whose value at the generator's
+  // ball t2 is v's: the only one whose ball meets v's.
+  std::optional<RationalPolynomial> root_matching(const arb_t v2, const IntegerPolynomial& field,
+                                                  const arb_t t2, int degree) const {
+    std::optional<IntegerPolynomial> minimal;
+    for (int use = std::min(250, g_.digits); !minimal; use = std::min(2 * use, g_.digits)) {
+      const auto found = flint::minimal_polynomial_of_ball(v2, use, degree);
+      if (found.found) minimal = found.polynomial;
+      if (use == g_.digits) break;
+    }
+    if (!minimal) return std::nullopt;
+    std::vector<RationalPolynomial> roots;
+    try {
+      roots = pari::roots_in_field(field, *minimal);
+    } catch (const pari::Error&) {
+      return std::nullopt;
+    }
+    std::optional<RationalPolynomial> match;
+    Arb value;
+    FmpqPoly r;
+    for (const auto& root : roots) {
+      flint::fmpq_poly_from_strings(r.value, root.coefficients);
+      flint::Field::evaluate(value.value, r.value, t2, g_.prec2);
+      arb_sub(value.value, value.value, v2, g_.prec2);
+      if (!arb_contains_zero(value.value)) continue;
+      if (match) return std::nullopt;  // two roots meet v: not decided
+      match = root;
+    }
+    return match;
+  }
+
   // The candidates for v: itself, and v mu when P'(d) is invertible (always, P irreducible).
   Candidates candidates(const arb_t v, const arb_t v2) {
     Candidates c{{v, v2}};
@@ -840,6 +898,7 @@ class CoordinateSearch {
   const Generators& g_;
   const BaseField& k0_;
   const flint::Field q_of_d_;
+  const IntegerPolynomial p_, k0_field_;  // P, and K0's polynomial in t
   FmpqPoly mu_inverse_;
   Arb mu_, mu2_;
   bool scaled_ = false;
@@ -909,6 +968,9 @@ std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
       if (!element && !search.extended()) {
         if (const auto a = search.in_k0(v->value, v2->value, g.digits)) element = Element{*a, zero};
       }
+      if (!element && !search.extended()) {
+        if (const auto a = search.by_minimal_polynomial(v2->value)) element = Element{*a, zero};
+      }
       if (!element && !search.extended() && search.extend_by(v->value, v2->value))
         element = Element{zero, RationalPolynomial{{"1"}}};  // w itself
       if (!element) {
@@ -962,7 +1024,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   // generated by theta = t + j w (its minimal polynomial the characteristic polynomial of
   // multiplication by theta, exact and irreducible).
   const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
-  CoordinateSearch search(g, k0, d_poly);
+  CoordinateSearch search(g, k0, d_poly, out.field);
   FoundCoordinates found(static_cast<std::size_t>(in.n));
   if (std::string why = find_coordinates(found, search, in, g, rattlers, k0.k); !why.empty()) {
     out.reason = why;

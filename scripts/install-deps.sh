@@ -28,6 +28,7 @@ PKGS=(
   libflint-arb-dev     # exact d(n): ball arithmetic for root isolation and the embedding checks
   libfplll-dev         # exact d(n): the LLL of integer relations (5x FLINT's at degree 64, 4,000 digits)
   pari-gp              # the independent checker of exact certificates (checker/, shares no code)
+  libpari-dev          # exact d(n): number fields (a coordinate's minimal polynomial's roots in K, extensions of K)
   python3-dev pybind11-dev  # the Python module (python/): pybind11 binds the library for /usr/bin/python3
   python3-numpy python3-matplotlib  # the module's arrays and Packing.draw()
   python3-pytest       # the Python module's test suite, run by ctest

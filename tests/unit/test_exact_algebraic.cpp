@@ -4,6 +4,7 @@
 #include <mpfr.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -194,6 +195,75 @@ TEST(ExactConfiguration, ACoordinateWithALargeDenominatorIsFoundAsItsMultipleByP
   const ExactConfiguration c = prove_existence(in, poly);
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 22);  // Q(d, sqrt3): sqrt3 is not in Q(d), of odd degree
+  EXPECT_LT(c.largest_offset, 1e-25);
+}
+
+// Two disks on the bottom side at A = (a, 0) and B = (a + d, 0), with y = 3^(1/11),
+// d = 3/10 + y / M, M = 10^12 (P = 10^121 (10x - 3)^11 - 3, irreducible: the minimal polynomial
+// of y moved and scaled) and a = y^5 / 4 = M^5 (d - 3/10)^5 / 4. Every relation that writes a in
+// the field's bases (d^i; d^i, sqrt3 d^i; also a P'(d), again M^5 times a polynomial in
+// d - 3/10) has coefficients of about 60 digits, while LLL at D = 300 digits among 12 or more
+// numbers finds nothing taller than about 10^25; a's minimal polynomial over Q, 4^11 x^11 - 3^5,
+// needs about 100 digits. So from D = 300 digits a is found only as the root of that polynomial
+// in Q(d) (PARI's nfroots; docs/exact.md, "Coordinates").
+TEST(ExactConfiguration, ACoordinateOfLargeHeightIsFoundAsARootOfItsMinimalPolynomial) {
+  const int digits = 300;
+  const mpfr_prec_t bits = 4000;
+  mpfr_t y, d, a, b;
+  for (mpfr_ptr v : {y, d, a, b}) mpfr_init2(v, bits);
+  mpfr_set_ui(y, 3, MPFR_RNDN);
+  mpfr_rootn_ui(y, y, 11, MPFR_RNDN);
+  mpfr_pow_ui(a, y, 5, MPFR_RNDN);
+  mpfr_div_ui(a, a, 4, MPFR_RNDN);
+  mpfr_div_ui(d, y, 1000000, MPFR_RNDN);
+  mpfr_div_ui(d, d, 1000000, MPFR_RNDN);
+  mpfr_set_ui(b, 3, MPFR_RNDN);
+  mpfr_div_ui(b, b, 10, MPFR_RNDN);
+  mpfr_add(d, d, b, MPFR_RNDN);
+  mpfr_add(b, a, d, MPFR_RNDN);
+  auto fixed = [](mpfr_t x, int decimals) {
+    char* text = nullptr;
+    mpfr_asprintf(&text, "%.*Rf", decimals, x);
+    std::string s(text);
+    mpfr_free_str(text);
+    return s;
+  };
+  const std::string d_text = fixed(d, 2 * digits), a_text = fixed(a, 2 * digits),
+                    b_text = fixed(b, 2 * digits);
+  for (mpfr_ptr v : {y, d, a, b}) mpfr_clear(v);
+  ASSERT_GT(std::stod(a_text), 0.3);
+  ASSERT_LT(std::stod(b_text), 0.8);
+  MinimalPolynomial poly;
+  poly.found = true;
+  // x^k: 10^121 C(11, k) 10^k (-3)^(11 - k), and -3 more at k = 0.
+  mpz_t coefficient, t;
+  mpz_inits(coefficient, t, nullptr);
+  for (unsigned long k = 0; k <= 11; ++k) {
+    mpz_bin_uiui(coefficient, 11, k);
+    mpz_ui_pow_ui(t, 10, 121 + k);
+    mpz_mul(coefficient, coefficient, t);
+    mpz_ui_pow_ui(t, 3, 11 - k);
+    mpz_mul(coefficient, coefficient, t);
+    if ((11 - k) % 2) mpz_neg(coefficient, coefficient);
+    if (k == 0) mpz_sub_ui(coefficient, coefficient, 3);
+    char* text = mpz_get_str(nullptr, 10, coefficient);
+    poly.polynomial.coefficients.push_back(text);
+    void (*release)(void*, std::size_t);
+    mp_get_memory_functions(nullptr, nullptr, &release);
+    release(text, std::strlen(text) + 1);
+  }
+  mpz_clears(coefficient, t, nullptr);
+  poly.root = {"3000000000011/10000000000000", "3000000000012/10000000000000"};  // y = 1.10503..
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
+  in.d = d_text;
+  in.points = {{a_text, "0"}, {b_text, "0"}};
+  in.given = {{a_text.substr(0, 34), "0"}, {b_text.substr(0, 34), "0"}};
+  in.digits = digits;
+  const ExactConfiguration c = prove_existence(in, poly);
+  ASSERT_TRUE(c.proven) << c.reason;
+  EXPECT_EQ(c.field.degree(), 22);  // Q(d, sqrt3)
   EXPECT_LT(c.largest_offset, 1e-25);
 }
 
