@@ -694,6 +694,22 @@ RationalPolynomial negated(const RationalPolynomial& a) {
   return flint::strings_from_fmpq_poly(x.value);
 }
 
+// e(s) for s in Q[theta]/(field): Horner, reduced modulo the field at each step.
+RationalPolynomial composed(const RationalPolynomial& e, const RationalPolynomial& s,
+                            const IntegerPolynomial& field) {
+  const flint::Field f(field);
+  FmpqPoly acc, sp, term;
+  f.set(sp.value, s);
+  Fmpq c;
+  for (std::size_t i = e.coefficients.size(); i-- > 0;) {
+    f.mul(acc.value, acc.value, sp.value);
+    fmpq_set_str(c.value, e.coefficients[i].c_str(), 10);
+    fmpq_poly_set_fmpq(term.value, c.value);
+    fmpq_poly_add(acc.value, acc.value, term.value);
+  }
+  return flint::strings_from_fmpq_poly(acc.value);
+}
+
 // A coordinate as a + b w, a and b in K0 (b = 0 while there is no extension).
 using Element = std::array<RationalPolynomial, 2>;
 
@@ -747,28 +763,52 @@ class CoordinateSearch {
     return k0_of(c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients);
   }
 
-  // v in K0 as a root of its minimal polynomial over Q (PARI's nfroots), for a coordinate whose
-  // coefficients in K0's basis have more digits than a relation can find at D digits (t126a's
-  // x_51: 108 digits in d's powers, its minimal polynomial over Q 33; docs/exact.md,
-  // "Coordinates"). In the tower, v and v / sqrt 3 are tried in Q(d) (degree m) before v in K0.
-  std::optional<RationalPolynomial> by_minimal_polynomial(const arb_t v2) {
+  // v in the current field K as a root of its minimal polynomial over Q (PARI's nfroots), for a
+  // coordinate whose coefficients in K0's basis have more digits than a relation can find at D
+  // digits (t126a's x_51: 108 digits in d's powers, its minimal polynomial over Q 33;
+  // docs/exact.md, "Coordinates"). The smallest field first: Q(d) (also for v / sqrt 3 in the
+  // tower), then K0, then K beyond K0. When v's minimal polynomial has no root in K, K becomes
+  // K(v) = K[w]/(f), f its irreducible factor over K that vanishes at v (PARI's nffactor and
+  // rnfequation), and `extended` is set: the elements found before are then `mapped` into it.
+  std::optional<RationalPolynomial> by_minimal_polynomial(const arb_t v2, bool& extended) {
+    extended = false;
     const int m = g_.m;
-    Arb scaled;
-    for (int part = 0; part < (k0_.tower ? 2 : 1); ++part) {
-      if (part == 0)
-        arb_set(scaled.value, v2);
-      else
-        arb_div(scaled.value, v2, g_.s2.value, g_.prec2);
-      const auto r = root_matching(scaled.value, p_, g_.d2.value, m);
-      if (!r) continue;
-      if (!k0_.tower) return r;
-      std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
-      std::copy(r->coefficients.begin(), r->coefficients.end(),
-                e.begin() + static_cast<std::ptrdiff_t>(part * m));
-      return k0_of(e);
+    // Degree <= [K:Q] when v is in K; up to twice that (at least 16) for a v outside it.
+    const auto minimal =
+        minimal_polynomial_of(v2, std::min(std::max(2 * degree(), 16), kLargestDegree));
+    if (!minimal) return std::nullopt;
+    if (minimal->degree() <= m) {
+      if (const auto r = matching_root(v2, p_, g_.d2.value, *minimal)) return in_q_of_d(*r, 0);
     }
-    if (!k0_.tower) return std::nullopt;
-    return root_matching(v2, k0_field_, k0_.t2.value, k0_.k);
+    if (k0_.tower) {
+      Arb scaled;
+      arb_div(scaled.value, v2, g_.s2.value, g_.prec2);
+      if (const auto over = minimal_polynomial_of(scaled.value, m)) {
+        if (const auto r = matching_root(scaled.value, p_, g_.d2.value, *over))
+          return in_q_of_d(*r, 1);
+      }
+      if (minimal->degree() <= k0_.k) {
+        if (const auto r = matching_root(v2, k0_field_, k0_.t2.value, *minimal))
+          return to_current(*r);
+      }
+    }
+    if (beyond_) {
+      if (const auto r = matching_root(v2, beyond_->field, beyond_->theta2.value, *minimal))
+        return r;
+    }
+    return extend_by_factor(v2, *minimal, extended);
+  }
+
+  // Beyond K0 (by_minimal_polynomial): the current field, an element of K0 in it, an element of
+  // the field before the last extension in it.
+  bool beyond() const { return beyond_ != nullptr; }
+  const IntegerPolynomial& beyond_field() const { return beyond_->field; }
+  const arb_struct* beyond_theta2() const { return beyond_->theta2.value; }
+  RationalPolynomial to_current(const RationalPolynomial& e) const {
+    return beyond_ ? composed(e, beyond_->t, beyond_->field) : e;
+  }
+  RationalPolynomial mapped(const RationalPolynomial& e) const {
+    return composed(e, last_map_, beyond_->field);
   }
 
   // v = a + b w with a, b in K0.
@@ -852,30 +892,31 @@ class CoordinateSearch {
     return out;
   }
 
-  // The root in Q[t]/(field) of v's minimal polynomial over Q (degree <= `degree`, found from
-  // 250, 500, ... up to D digits and confirmed from twice as many) whose value at the generator's
-  // ball t2 is v's: the only one whose ball meets v's.
-  std::optional<RationalPolynomial> root_matching(const arb_t v2, const IntegerPolynomial& field,
-                                                  const arb_t t2, int degree) const {
-    std::optional<IntegerPolynomial> minimal;
-    for (int use = std::min(250, g_.digits); !minimal; use = std::min(2 * use, g_.digits)) {
-      const auto found = flint::minimal_polynomial_of_ball(v2, use, degree);
-      if (found.found) minimal = found.polynomial;
-      if (use == g_.digits) break;
+  // The minimal polynomial over Q of v (degree <= `largest`), found from 250, 500, ... up to D
+  // digits and confirmed from twice as many.
+  std::optional<IntegerPolynomial> minimal_polynomial_of(const arb_t v2, int largest) const {
+    for (int use = std::min(250, g_.digits);; use = std::min(2 * use, g_.digits)) {
+      const auto found = flint::minimal_polynomial_of_ball(v2, use, largest);
+      if (found.found) return found.polynomial;
+      if (use == g_.digits) return std::nullopt;
     }
-    if (!minimal) return std::nullopt;
+  }
+
+  // The root in Q[t]/(field) of `minimal` whose value at the generator's ball t2 is v: the only
+  // one whose ball meets v's.
+  std::optional<RationalPolynomial> matching_root(const arb_t v2, const IntegerPolynomial& field,
+                                                  const arb_t t2,
+                                                  const IntegerPolynomial& minimal) const {
     std::vector<RationalPolynomial> roots;
     try {
-      roots = pari::roots_in_field(field, *minimal);
+      roots = pari::roots_in_field(field, minimal);
     } catch (const pari::Error&) {
       return std::nullopt;
     }
     std::optional<RationalPolynomial> match;
     Arb value;
-    FmpqPoly r;
     for (const auto& root : roots) {
-      flint::fmpq_poly_from_strings(r.value, root.coefficients);
-      flint::Field::evaluate(value.value, r.value, t2, g_.prec2);
+      value_at(value.value, root, t2);
       arb_sub(value.value, value.value, v2, g_.prec2);
       if (!arb_contains_zero(value.value)) continue;
       if (match) return std::nullopt;  // two roots meet v: not decided
@@ -883,6 +924,72 @@ class CoordinateSearch {
     }
     return match;
   }
+
+  void value_at(arb_t out, const RationalPolynomial& e, const arb_t t2) const {
+    FmpqPoly q;
+    flint::fmpq_poly_from_strings(q.value, e.coefficients);
+    flint::Field::evaluate(out, q.value, t2, g_.prec2);
+  }
+
+  // r in Q(d) (P's powers) as an element of the current field, times sqrt 3 when `part` is 1.
+  RationalPolynomial in_q_of_d(const RationalPolynomial& r, int part) const {
+    if (!k0_.tower) return to_current(r);
+    const int m = g_.m;
+    std::vector<std::string> e(static_cast<std::size_t>(2 * m), "0");
+    std::copy(r.coefficients.begin(), r.coefficients.end(),
+              e.begin() + static_cast<std::ptrdiff_t>(part * m));
+    return to_current(k0_of(e));
+  }
+
+  // K(v) = K[w]/(f) for the irreducible factor f over the current field K of v's minimal
+  // polynomial that vanishes at v; v = w there.
+  std::optional<RationalPolynomial> extend_by_factor(const arb_t v2,
+                                                     const IntegerPolynomial& minimal,
+                                                     bool& extended) {
+    const IntegerPolynomial& field = beyond_ ? beyond_->field : k0_field_;
+    const arb_struct* theta2 = beyond_ ? beyond_->theta2.value : k0_.t2.value;
+    std::vector<std::vector<RationalPolynomial>> factors;
+    try {
+      factors = pari::factors_over_field(field, minimal);
+    } catch (const pari::Error&) {
+      return std::nullopt;
+    }
+    const std::vector<RationalPolynomial>* vanishing = nullptr;
+    Arb value, c;
+    for (const auto& f : factors) {
+      arb_zero(value.value);  // f(v) by Horner, its coefficients at the generator's ball
+      for (std::size_t i = f.size(); i-- > 0;) {
+        arb_mul(value.value, value.value, v2, g_.prec2);
+        value_at(c.value, f[i], theta2);
+        arb_add(value.value, value.value, c.value, g_.prec2);
+      }
+      if (!arb_contains_zero(value.value)) continue;
+      if (vanishing) return std::nullopt;  // two factors vanish at v: not decided
+      vanishing = &f;
+    }
+    if (!vanishing || vanishing->size() < 3) return std::nullopt;
+    const int next_degree = degree() * static_cast<int>(vanishing->size() - 1);
+    if (next_degree > kLargestField) return std::nullopt;
+    pari::Extension e;
+    try {
+      e = pari::extend_field(field, *vanishing);
+    } catch (const pari::Error&) {
+      return std::nullopt;
+    }
+    auto next = std::make_unique<Beyond>();
+    next->field = e.field;
+    flint::Fmpz shift;
+    fmpz_set_str(shift.value, e.shift.c_str(), 10);
+    arb_mul_fmpz(next->theta2.value, theta2, shift.value, g_.prec2);  // theta = w + shift t
+    arb_add(next->theta2.value, next->theta2.value, v2, g_.prec2);
+    next->t = beyond_ ? composed(beyond_->t, e.t, e.field) : e.t;
+    last_map_ = e.t;
+    beyond_ = std::move(next);
+    extended = true;
+    return e.w;
+  }
+
+  int degree() const { return beyond_ ? beyond_->field.degree() : k0_.k; }
 
   // The candidates for v: itself, and v mu when P'(d) is invertible (always, P irreducible).
   Candidates candidates(const arb_t v, const arb_t v2) {
@@ -899,6 +1006,16 @@ class CoordinateSearch {
   const BaseField& k0_;
   const flint::Field q_of_d_;
   const IntegerPolynomial p_, k0_field_;  // P, and K0's polynomial in t
+  // Minimal polynomials of coordinates up to this degree; fields beyond K0 up to this one.
+  static constexpr int kLargestDegree = 128, kLargestField = 256;
+  // Beyond K0: the current field, its generator's ball (2D digits) and K0's t in it.
+  struct Beyond {
+    IntegerPolynomial field;
+    Arb theta2;
+    RationalPolynomial t;
+  };
+  std::unique_ptr<Beyond> beyond_;
+  RationalPolynomial last_map_;  // the generator before the last extension, in the current field
   FmpqPoly mu_inverse_;
   Arb mu_, mu2_;
   bool scaled_ = false;
@@ -961,23 +1078,32 @@ std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
         const auto difference = search.in_k0(diff.value, diff2.value, 200);
         if (!difference) continue;
         const auto& base = found[static_cast<std::size_t>(j)][cu];
-        element = Element{sum_of(base[0], *difference), base[1]};
+        element = Element{sum_of(base[0], search.to_current(*difference)), base[1]};
         break;
       }
       if (!element && search.extended()) element = search.in_l(v->value, v2->value, g.digits);
       if (!element && !search.extended()) {
-        if (const auto a = search.in_k0(v->value, v2->value, g.digits)) element = Element{*a, zero};
+        if (const auto a = search.in_k0(v->value, v2->value, g.digits))
+          element = Element{search.to_current(*a), zero};
       }
       if (!element && !search.extended()) {
-        if (const auto a = search.by_minimal_polynomial(v2->value)) element = Element{*a, zero};
+        bool extended = false;
+        if (const auto a = search.by_minimal_polynomial(v2->value, extended)) {
+          element = Element{*a, zero};
+          for (std::size_t p = 0; extended && p < found.size(); ++p)  // K grew: map what is in it
+            for (std::size_t q = 0; q < 2; ++q)
+              if (balls[p][2 * q]) found[p][q][0] = search.mapped(found[p][q][0]);
+        }
       }
-      if (!element && !search.extended() && search.extend_by(v->value, v2->value))
+      if (!element && !search.extended() && !search.beyond() &&
+          search.extend_by(v->value, v2->value))
         element = Element{zero, RationalPolynomial{{"1"}}};  // w itself
       if (!element) {
         return fmt::format(
-            "coordinate {} of point {} is in neither the field of degree {} nor a quadratic "
-            "extension of it{} at {} digits",
-            c == 0 ? "x" : "y", i + 1, k, search.extended() ? " (the one found)" : "", g.digits);
+            "coordinate {} of point {} is in neither the field of degree {} nor an extension of "
+            "it{} at {} digits",
+            c == 0 ? "x" : "y", i + 1, k,
+            search.extended() || search.beyond() ? " (the one found)" : "", g.digits);
       }
       found[iu][cu] = *element;
       balls[iu][2 * cu] = std::move(v);
@@ -1031,7 +1157,17 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     return out;
   }
   out.points.resize(static_cast<std::size_t>(in.n));
-  if (!search.extended()) {
+  const arb_struct* t2 = k0.t2.value;
+  if (search.beyond()) {  // K beyond K0: every element is already in it
+    for (int i = 0; i < in.n; ++i)
+      for (int c = 0; c < 2; ++c)
+        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
+            found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
+    out.d_in_field = search.to_current(out.d_in_field);
+    out.sqrt3_in_field = search.to_current(out.sqrt3_in_field);
+    out.field = search.beyond_field();
+    t2 = search.beyond_theta2();
+  } else if (!search.extended()) {
     for (int i = 0; i < in.n; ++i)
       for (int c = 0; c < 2; ++c)
         out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
@@ -1045,7 +1181,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   }
 
   // Then the proof's steps, each a reason when it fails.
-  if (std::string why = check_proof(out, in, d_poly, rattlers, k0.t2.value, g.digits, g.prec2);
+  if (std::string why = check_proof(out, in, d_poly, rattlers, t2, g.digits, g.prec2);
       !why.empty()) {
     out.reason = why;
     return out;

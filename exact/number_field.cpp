@@ -97,9 +97,9 @@ GEN in_y(const MonicField& f, GEN coefficients) {
 
 RationalPolynomial polynomial_of(GEN coefficients) {
   RationalPolynomial out;
-  for (long i = 1; i < lg(coefficients); ++i) out.coefficients.push_back(text_of(gel(coefficients, i)));
-  while (out.coefficients.size() > 1 && out.coefficients.back() == "0")
-    out.coefficients.pop_back();
+  for (long i = 1; i < lg(coefficients); ++i)
+    out.coefficients.push_back(text_of(gel(coefficients, i)));
+  while (out.coefficients.size() > 1 && out.coefficients.back() == "0") out.coefficients.pop_back();
   return out;
 }
 
@@ -122,8 +122,12 @@ auto with_pari(Body body, Convert convert) -> decltype(convert(GEN{})) {
   const pari_sp top = avma;
   GEN result = nullptr;
   char* message = nullptr;
-  pari_CATCH(CATCH_ALL) { message = pari_err2str(pari_err_last()); }
-  pari_TRY { result = body(); }
+  pari_CATCH(CATCH_ALL) {
+    message = pari_err2str(pari_err_last());
+  }
+  pari_TRY {
+    result = body();
+  }
   pari_ENDCATCH;
   if (message) {
     const std::string text(message);
@@ -208,15 +212,17 @@ Extension extend_field(const IntegerPolynomial& field, const std::vector<Rationa
         const MonicField absolute{z, gen_1, degpol(z), vx};
         GEN zc = cgetg(degpol(z) + 2, t_VEC);
         for (long i = 0; i <= degpol(z); ++i) gel(zc, i + 1) = polcoef(z, i, vx);
+        // theta = w + k y = w + (k lc) t
         return mkvec4(zc, in_t(absolute, gdiv(a, f.lc)),
-                      in_t(absolute, gsub(pol_x(vx), gmul(gel(all, 3), a))), gel(all, 3));
+                      in_t(absolute, gsub(pol_x(vx), gmul(gel(all, 3), a))),
+                      gmul(gel(all, 3), f.lc));
       },
       [](GEN all) {
         Extension out;
         out.field.coefficients = polynomial_of(gel(all, 1)).coefficients;
         out.t = polynomial_of(gel(all, 2));
         out.w = polynomial_of(gel(all, 3));
-        out.k = itos(gel(all, 4));
+        out.shift = text_of(gel(all, 4));
         return out;
       });
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "exact/algebraic.hpp"
@@ -29,12 +30,12 @@ std::vector<std::vector<RationalPolynomial>> factors_over_field(const IntegerPol
                                                                 const IntegerPolynomial& q);
 
 // K' = K[w]/(f(w)) for an irreducible factor f over K (coefficients in K, constant first, monic):
-// its polynomial over Q (PARI's rnfequation: a primitive element theta = w + k t), and t, w as
-// polynomials in theta.
+// its polynomial over Q (PARI's rnfequation: a primitive element theta = w + shift t, shift an
+// integer), and t, w as polynomials in theta.
 struct Extension {
-  IntegerPolynomial field;          // K'(theta)
-  RationalPolynomial t, w;          // the old generator and the new element in K'
-  long k = 0;                       // theta = w + k t
+  IntegerPolynomial field;  // K'(theta), monic
+  RationalPolynomial t, w;  // the old generator and the new element in K'
+  std::string shift;        // theta = w + shift t
 };
 Extension extend_field(const IntegerPolynomial& field, const std::vector<RationalPolynomial>& f);
 

@@ -142,6 +142,48 @@ TEST(ExactConfiguration, CoordinatesOutsideQdSqrt3GetAQuadraticExtension) {
   EXPECT_LT(c.largest_offset, 1e-25);
 }
 
+// Disk 1 on the bottom-left corner, disk 2 at distance d = 1/2 from it at (a, b): a = 2^(1/3) / 4
+// (degree 3) and b = sqrt(1/4 - a^2) (degree 6: (4 - 16 b^2)^3 = 4). Neither is in Q(d, sqrt 3)
+// = Q(sqrt 3) nor in a quadratic extension of it: K grows twice, by a's cubic and then by b's
+// quadratic factor over Q(sqrt 3, a), to Q(sqrt 3, b) of degree 12 (docs/exact.md, "A general
+// number field").
+TEST(ExactConfiguration, CoordinatesBeyondAQuadraticExtensionGetTheirOwnField) {
+  const int digits = 120;
+  mpfr_t a, b;
+  mpfr_inits2(1000, a, b, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_ui(a, 2, MPFR_RNDN);
+  mpfr_cbrt(a, a, MPFR_RNDN);
+  mpfr_div_ui(a, a, 4, MPFR_RNDN);
+  mpfr_sqr(b, a, MPFR_RNDN);
+  mpfr_ui_sub(b, 1, b, MPFR_RNDN);
+  mpfr_sub_d(b, b, 0.75, MPFR_RNDN);  // 1/4 - a^2
+  mpfr_sqrt(b, b, MPFR_RNDN);
+  auto fixed = [](mpfr_t x, int decimals) {
+    char* text = nullptr;
+    mpfr_asprintf(&text, "%.*Rf", decimals, x);
+    std::string s(text);
+    mpfr_free_str(text);
+    return s;
+  };
+  const std::string a_text = fixed(a, 2 * digits), b_text = fixed(b, 2 * digits);
+  mpfr_clears(a, b, static_cast<mpfr_ptr>(nullptr));
+  MinimalPolynomial p;
+  p.found = true;
+  p.polynomial.coefficients = {"-1", "2"};
+  p.root = {"49/100", "51/100"};
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(0, Side::Left)};
+  in.d = "0.5";
+  in.points = {{"0", "0"}, {a_text, b_text}};
+  in.given = {{"0", "0"}, {a_text.substr(0, 32), b_text.substr(0, 32)}};
+  in.digits = digits;
+  const ExactConfiguration c = prove_existence(in, p);
+  ASSERT_TRUE(c.proven) << c.reason;
+  EXPECT_EQ(c.field.degree(), 12);
+  EXPECT_LT(c.largest_offset, 1e-25);
+}
+
 // Two disks on the bottom side, A = (a, 0) and B = (a + d, 0), with d = 1/(5 + 3^(1/11)) (P below,
 // degree 11: (1 - 5x)^11 - 3x^11 divided by its content, from y = 1/x - 5, y^11 = 3; irreducible by
 // Eisenstein at 3) and a = -(1 + d) / (2^20 P'(d)). In the tower basis d^i, sqrt3 d^i, a's integer
