@@ -302,124 +302,8 @@ std::vector<int> breadth_first_order(int n, const std::vector<std::vector<int>>&
   return order;
 }
 
-using FoundCoordinates = std::vector<std::array<std::array<RationalPolynomial, 2>, 2>>;
-
-// The coordinates a + b w, found in L = K0(w) with w^2 + alpha w + beta = 0, as polynomials in a
-// primitive element theta = t + j w of L (and K becomes L: out's field, d and sqrt 3 rewritten,
-// t2 becomes theta's ball, k its degree). Empty, or why not.
-std::string express_in_primitive_element(ExactConfiguration& out, const FoundCoordinates& found,
-                                         const std::set<int>& rattlers,
-                                         const RationalPolynomial& alpha,
-                                         const RationalPolynomial& beta, int& k, arb_t t2,
-                                         const arb_t w2, slong prec2) {
-  const int n = static_cast<int>(found.size());
-  const RationalPolynomial zero{{"0"}};
-  // L over Q: the basis t^0..t^(k-1), t^0 w..t^(k-1) w. theta = t + j w is primitive when the
-  // characteristic polynomial of multiplication by theta (degree 2k) is irreducible.
-  const flint::Field k0(out.field);
-  FmpqPoly fa, fb;
-  k0.set(fa.value, alpha);
-  k0.set(fb.value, beta);
-  const int size = 2 * k;
-  auto coordinates_of = [&](fmpq_mat_t column, slong col, const fmpq_poly_t a,
-                            const fmpq_poly_t b) {
-    for (int r = 0; r < k; ++r) {
-      fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, r, col), a, r);
-      fmpq_poly_get_coeff_fmpq(fmpq_mat_entry(column, k + r, col), b, r);
-    }
-  };
-  // (a + b w) theta = (a t - j b beta) + (a j + b t - j b alpha) w
-  auto times_theta = [&](FmpqPoly& a, FmpqPoly& b, int j) {
-    FmpqPoly x, na, nb, tpoly;
-    fmpq_poly_set_coeff_si(tpoly.value, 1, 1);
-    k0.mul(na.value, a.value, tpoly.value);
-    k0.mul(x.value, b.value, fb.value);
-    fmpq_poly_scalar_mul_si(x.value, x.value, j);
-    fmpq_poly_sub(na.value, na.value, x.value);
-    fmpq_poly_scalar_mul_si(nb.value, a.value, j);
-    k0.mul(x.value, b.value, tpoly.value);
-    fmpq_poly_add(nb.value, nb.value, x.value);
-    k0.mul(x.value, b.value, fa.value);
-    fmpq_poly_scalar_mul_si(x.value, x.value, j);
-    fmpq_poly_sub(nb.value, nb.value, x.value);
-    fmpq_poly_swap(a.value, na.value);
-    fmpq_poly_swap(b.value, nb.value);
-  };
-  int chosen = 0;
-  fmpq_mat_t powers, inverse;
-  fmpq_mat_init(powers, size, size);
-  fmpq_mat_init(inverse, size, size);
-  FmpzPoly norm;
-  for (int j = 1; j <= 5 && !chosen; ++j) {
-    FmpqPoly a, b;
-    fmpq_poly_one(a.value);
-    for (int col = 0; col < size; ++col) {
-      coordinates_of(powers, col, a.value, b.value);
-      times_theta(a, b, j);
-    }
-    // theta^size in the basis: the powers' matrix is invertible iff theta generates L; its
-    // minimal polynomial is then x^size - sum c_i x^i with c = powers^-1 theta^size.
-    if (!fmpq_mat_inv(inverse, powers)) continue;
-    fmpq_mat_t last, c;
-    fmpq_mat_init(last, size, 1);
-    fmpq_mat_init(c, size, 1);
-    coordinates_of(last, 0, a.value, b.value);
-    fmpq_mat_mul(c, inverse, last);
-    FmpqPoly minimal;
-    fmpq_poly_set_coeff_si(minimal.value, size, 1);
-    for (int r = 0; r < size; ++r) {
-      Fmpq e;
-      fmpq_neg(e.value, fmpq_mat_entry(c, r, 0));
-      fmpq_poly_set_coeff_fmpq(minimal.value, r, e.value);
-    }
-    fmpq_mat_clear(last);
-    fmpq_mat_clear(c);
-    fmpq_poly_get_numerator(norm.value, minimal.value);
-    fmpz_poly_primitive_part(norm.value, norm.value);
-    if (fmpz_poly_degree(norm.value) == size && irreducible(norm.value)) chosen = j;
-  }
-  if (!chosen) {
-    fmpq_mat_clear(powers);
-    fmpq_mat_clear(inverse);
-    return fmt::format("no primitive element t + j w (j = 1..5) of the extension of degree {}",
-                       size);
-  }
-  // Elements a + b w as polynomials in theta: inverse * coordinates.
-  fmpq_mat_t column, result;
-  fmpq_mat_init(column, size, 1);
-  fmpq_mat_init(result, size, 1);
-  auto in_theta = [&](const RationalPolynomial& a, const RationalPolynomial& b) {
-    FmpqPoly pa, pb;
-    k0.set(pa.value, a);
-    k0.set(pb.value, b);
-    coordinates_of(column, 0, pa.value, pb.value);
-    fmpq_mat_mul(result, inverse, column);
-    FmpqPoly poly;
-    for (int r = 0; r < size; ++r)
-      fmpq_poly_set_coeff_fmpq(poly.value, r, fmpq_mat_entry(result, r, 0));
-    return flint::strings_from_fmpq_poly(poly.value);
-  };
-  for (int i = 0; i < n; ++i)
-    for (int c = 0; c < 2; ++c) {
-      const auto& e = found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)];
-      out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
-          rattlers.count(i) ? e[0] : in_theta(e[0], e[1]);
-    }
-  out.d_in_field = in_theta(out.d_in_field, zero);
-  out.sqrt3_in_field = in_theta(out.sqrt3_in_field, zero);
-  fmpq_mat_clear(column);
-  fmpq_mat_clear(result);
-  fmpq_mat_clear(powers);
-  fmpq_mat_clear(inverse);
-  if (fmpz_sgn(fmpz_poly_lead(norm.value)) < 0) fmpz_poly_neg(norm.value, norm.value);
-  out.field = flint::strings_from_poly(norm.value);
-  // theta0 = t0 + j w0
-  Arb jw;
-  arb_mul_si(jw.value, w2, chosen, prec2);
-  arb_add(t2, t2, jw.value, prec2);
-  k = size;
-  return "";
-}
+// Every coordinate as an element of the current field (rattlers: rationals).
+using FoundCoordinates = std::vector<std::array<RationalPolynomial, 2>>;
 
 // t0 isolated far more narrowly than d's interval, so that d_in_K(t0), a root of P (checked
 // exactly below), is proven to be the root in d's interval. Empty, or why not.
@@ -687,13 +571,6 @@ RationalPolynomial sum_of(const RationalPolynomial& a, const RationalPolynomial&
   return flint::strings_from_fmpq_poly(x.value);
 }
 
-RationalPolynomial negated(const RationalPolynomial& a) {
-  FmpqPoly x;
-  flint::fmpq_poly_from_strings(x.value, a.coefficients);
-  fmpq_poly_neg(x.value, x.value);
-  return flint::strings_from_fmpq_poly(x.value);
-}
-
 // e(s) for s in Q[theta]/(field): Horner, reduced modulo the field at each step.
 RationalPolynomial composed(const RationalPolynomial& e, const RationalPolynomial& s,
                             const IntegerPolynomial& field) {
@@ -710,11 +587,8 @@ RationalPolynomial composed(const RationalPolynomial& e, const RationalPolynomia
   return flint::strings_from_fmpq_poly(acc.value);
 }
 
-// A coordinate as a + b w, a and b in K0 (b = 0 while there is no extension).
-using Element = std::array<RationalPolynomial, 2>;
-
-// Finds coordinates in K0, or in a quadratic extension L = K0(w) once one is needed (w: the first
-// coordinate outside K0, its equation w^2 + alpha w + beta = 0 found with alpha, beta in K0).
+// Finds coordinates in K0 by integer relations, and in K0 or beyond it through their minimal
+// polynomials (by_minimal_polynomial).
 class CoordinateSearch {
  public:
   CoordinateSearch(const Generators& g, const BaseField& k0, const MinimalPolynomial& d_poly,
@@ -734,11 +608,6 @@ class CoordinateSearch {
       arb_fmpz_poly_evaluate_arb(mu2_.value, derivative.value, g.d2.value, g.prec2);
     }
   }
-
-  bool extended() const { return extended_; }
-  const RationalPolynomial& alpha() const { return alpha_; }
-  const RationalPolynomial& beta() const { return beta_; }
-  const arb_struct* w2() const { return w2_.value; }
 
   // v in K0, from at most `largest` digits. In the tower, Q(d) and sqrt3 Q(d) are tried first
   // (half the lattice dimension, so about half the digits and a sixteenth of LLL's time): along
@@ -809,47 +678,6 @@ class CoordinateSearch {
   }
   RationalPolynomial mapped(const RationalPolynomial& e) const {
     return composed(e, last_map_, beyond_->field);
-  }
-
-  // v = a + b w with a, b in K0.
-  std::optional<Element> in_l(const arb_t v, const arb_t v2, int largest) {
-    const auto c = combination_of(
-        candidates(v, v2),
-        [&](int pass, slong p) {
-          Balls basis = k0_basis(pass, p);
-          const std::size_t size = basis.size();
-          for (std::size_t i = 0; i < size; ++i) {
-            basis.push_back(std::make_unique<Arb>());
-            arb_mul(basis.back()->value, basis[i]->value, pass ? w2_.value : w_.value, p);
-          }
-          return basis;
-        },
-        g_.digits, largest, &l_basis_);
-    if (!c) return std::nullopt;
-    const auto e = c->candidate == 1 ? unscaled(c->coefficients) : c->coefficients;
-    const auto half = e.begin() + static_cast<std::ptrdiff_t>(e.size() / 2);
-    return Element{k0_of({e.begin(), half}), k0_of({half, e.end()})};
-  }
-
-  // Takes w = v as the extension's generator: w^2 = -(alpha w + beta) from the relation among
-  // [w^2, w K0-basis, K0-basis]. False (and no extension) when there is no such relation.
-  bool extend_by(const arb_t v, const arb_t v2) {
-    l_basis_.clear();  // a new w: a new basis of L
-    arb_set(w_.value, v);
-    arb_set(w2_.value, v2);
-    Arb square, square2;
-    arb_mul(square.value, w_.value, w_.value, g_.prec);
-    arb_mul(square2.value, w2_.value, w2_.value, g_.prec2);
-    extended_ = true;
-    const auto ab = in_l(square.value, square2.value, g_.digits);
-    if (!ab) {
-      extended_ = false;
-      return false;
-    }
-    // in_l wrote w^2 = a + b w: beta = -a, alpha = -b.
-    beta_ = negated((*ab)[0]);
-    alpha_ = negated((*ab)[1]);
-    return true;
   }
 
  private:
@@ -1020,31 +848,28 @@ class CoordinateSearch {
   Arb mu_, mu2_;
   bool scaled_ = false;
   Arb vm_, vm2_;  // v mu, the second candidate
-  // The extension, once there is one: w's balls and alpha, beta (in t).
-  Arb w_, w2_;
-  bool extended_ = false;
-  RationalPolynomial alpha_, beta_;
   // Each basis's reduced rows, kept for every coordinate looked for against it: Q(d) and
-  // sqrt3 Q(d) in the tower, the whole K0, and L (renewed with each w).
-  flint::ReducedBasis k0_half_[2], k0_full_, l_basis_;
+  // sqrt3 Q(d) in the tower, and the whole K0.
+  flint::ReducedBasis k0_half_[2], k0_full_;
 };
 
 // A rattler's coordinate: its given centred place, as a rational of 40 digits.
-Element rattler_coordinate(const std::string& text) {
+RationalPolynomial rattler_coordinate(const std::string& text) {
   Fmpq q;
   decimal_to_fmpq(q.value, text, 40);
   char* qt = fmpq_get_str(nullptr, 10, q.value);
-  Element e{RationalPolynomial{{qt}}, RationalPolynomial{{"0"}}};
+  RationalPolynomial e{{qt}};
   flint_free(qt);
   return e;
 }
 
-// Every coordinate in K0, or in the quadratic extension L = K0(w) when one is not; rattlers at
-// their given centred place. The disks are taken in breadth-first order along the bonds, and a
+// Every coordinate in K (K0, or a field beyond it once a coordinate needs one), rattlers at their
+// given centred place. The disks are taken in breadth-first order along the bonds, and a
 // coordinate is first looked for as a bonded neighbour's plus a difference in K0 found from at
 // most 200 digits: in lattice-like packings most differences are d/2, sqrt(3) d/2 and the like,
 // of small height, while the coordinates themselves may need 1,000s of digits (FLINT's LLL time
-// grows with them). Empty, or why not.
+// grows with them). Then by a relation in K0's basis, then through the coordinate's minimal
+// polynomial. Empty, or why not.
 std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
                              const ConfigurationInput& in, const Generators& g,
                              const std::set<int>& rattlers, int k) {
@@ -1054,7 +879,6 @@ std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
       neighbours[static_cast<std::size_t>(b.a)].push_back(b.b);
       neighbours[static_cast<std::size_t>(b.b)].push_back(b.a);
     }
-  const RationalPolynomial zero{{"0"}};
   // The found coordinates' balls (D and 2D digits), for their neighbours' differences.
   std::vector<std::array<std::unique_ptr<Arb>, 4>> balls(static_cast<std::size_t>(in.n));
   for (int i : breadth_first_order(in.n, neighbours))
@@ -1068,7 +892,7 @@ std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
       auto v = std::make_unique<Arb>(), v2 = std::make_unique<Arb>();
       flint::set_decimal(v2->value, text, 2 * g.digits, g.prec2);
       flint::round_ball(v->value, v2->value, g.digits);
-      std::optional<Element> element;
+      std::optional<RationalPolynomial> element;
       Arb diff, diff2;
       for (int j : neighbours[iu]) {
         const auto& known = balls[static_cast<std::size_t>(j)];
@@ -1077,33 +901,25 @@ std::string find_coordinates(FoundCoordinates& found, CoordinateSearch& search,
         arb_sub(diff2.value, v2->value, known[2 * cu + 1]->value, g.prec2);
         const auto difference = search.in_k0(diff.value, diff2.value, 200);
         if (!difference) continue;
-        const auto& base = found[static_cast<std::size_t>(j)][cu];
-        element = Element{sum_of(base[0], search.to_current(*difference)), base[1]};
+        element = sum_of(found[static_cast<std::size_t>(j)][cu], search.to_current(*difference));
         break;
       }
-      if (!element && search.extended()) element = search.in_l(v->value, v2->value, g.digits);
-      if (!element && !search.extended()) {
+      if (!element) {
         if (const auto a = search.in_k0(v->value, v2->value, g.digits))
-          element = Element{search.to_current(*a), zero};
+          element = search.to_current(*a);
       }
-      if (!element && !search.extended()) {
+      if (!element) {
         bool extended = false;
-        if (const auto a = search.by_minimal_polynomial(v2->value, extended)) {
-          element = Element{*a, zero};
-          for (std::size_t p = 0; extended && p < found.size(); ++p)  // K grew: map what is in it
-            for (std::size_t q = 0; q < 2; ++q)
-              if (balls[p][2 * q]) found[p][q][0] = search.mapped(found[p][q][0]);
-        }
+        element = search.by_minimal_polynomial(v2->value, extended);
+        for (std::size_t p = 0; extended && p < found.size(); ++p)  // K grew: map what is in it
+          for (std::size_t q = 0; q < 2; ++q)
+            if (balls[p][2 * q]) found[p][q] = search.mapped(found[p][q]);
       }
-      if (!element && !search.extended() && !search.beyond() &&
-          search.extend_by(v->value, v2->value))
-        element = Element{zero, RationalPolynomial{{"1"}}};  // w itself
       if (!element) {
         return fmt::format(
             "coordinate {} of point {} is in neither the field of degree {} nor an extension of "
             "it{} at {} digits",
-            c == 0 ? "x" : "y", i + 1, k,
-            search.extended() || search.beyond() ? " (the one found)" : "", g.digits);
+            c == 0 ? "x" : "y", i + 1, k, search.beyond() ? " (the one found)" : "", g.digits);
       }
       found[iu][cu] = *element;
       balls[iu][2 * cu] = std::move(v);
@@ -1146,9 +962,7 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     return out;
   }
 
-  // Every non-rattler coordinate in K0, or in a quadratic extension L = K0(w); then K becomes L,
-  // generated by theta = t + j w (its minimal polynomial the characteristic polynomial of
-  // multiplication by theta, exact and irreducible).
+  // Every non-rattler coordinate in K0, or in a field beyond it (CoordinateSearch).
   const std::set<int> rattlers(in.rattlers.begin(), in.rattlers.end());
   CoordinateSearch search(g, k0, d_poly, out.field);
   FoundCoordinates found(static_cast<std::size_t>(in.n));
@@ -1156,28 +970,14 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
     out.reason = why;
     return out;
   }
-  out.points.resize(static_cast<std::size_t>(in.n));
+  // Every element is in the current field: K0, or the field beyond it that a coordinate needed.
+  out.points = found;
   const arb_struct* t2 = k0.t2.value;
-  if (search.beyond()) {  // K beyond K0: every element is already in it
-    for (int i = 0; i < in.n; ++i)
-      for (int c = 0; c < 2; ++c)
-        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
-            found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
+  if (search.beyond()) {
     out.d_in_field = search.to_current(out.d_in_field);
     out.sqrt3_in_field = search.to_current(out.sqrt3_in_field);
     out.field = search.beyond_field();
     t2 = search.beyond_theta2();
-  } else if (!search.extended()) {
-    for (int i = 0; i < in.n; ++i)
-      for (int c = 0; c < 2; ++c)
-        out.points[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)] =
-            found[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)][0];
-  } else if (std::string why =
-                 express_in_primitive_element(out, found, rattlers, search.alpha(), search.beta(),
-                                              k0.k, k0.t2.value, search.w2(), g.prec2);
-             !why.empty()) {
-    out.reason = why;
-    return out;
   }
 
   // Then the proof's steps, each a reason when it fails.
