@@ -39,6 +39,7 @@ void ensure_stack() {
     pari_init_opts(kStack, 0, INIT_DFTm | INIT_noINTGMPm);
     paristack_setsize(kStack, kMaxStack);
     setdefault("nbthreads", "1", d_SILENT);  // one core per row: the passes run beside other work
+    DEBUGMEM = 0;                            // no "new stack size" warnings on stderr
     first = true;
   });
   if (!first) {
