@@ -42,30 +42,64 @@ class Matrix {
   std::vector<std::unique_ptr<FmpqPoly>> cells_;
 };
 
-// Reduced row echelon form over K in place; the pivot column of each pivot row.
+// The size of an element, for choosing pivots: its length times its largest numerator's bits, plus
+// its denominator's bits.
+slong size_of(const fmpq_poly_struct* a) {
+  return fmpq_poly_length(a) * FLINT_ABS(_fmpz_vec_max_bits(a->coeffs, a->length)) +
+         static_cast<slong>(fmpz_bits(a->den));
+}
+
+// Gauss-Jordan over K in place: each pivot row gets 1 in its pivot column, which becomes 0 in every
+// other row. The pivots are chosen as in sparse LU (Markowitz): the nonzero whose row and column
+// have the fewest other nonzeros, ties broken by the smaller element. G is sparse (at most 4
+// nonzeros per bond) and K's elements are large, so fill-in, not the count of operations, is the
+// cost. Returns the pivot column of each pivot row (rows 0, 1, ... after the swaps).
 std::vector<int> row_reduce(Matrix& m, const flint::Field& field) {
   std::vector<int> pivots;
+  std::vector<char> done(static_cast<std::size_t>(m.columns()), 0);
   FmpqPoly inverse, factor, product;
-  int row = 0;
-  for (int c = 0; c < m.columns() && row < m.rows(); ++c) {
-    int pivot = -1;
-    for (int r = row; r < m.rows() && pivot < 0; ++r)
-      if (!field.is_zero(m.at(r, c))) pivot = r;
-    if (pivot < 0) continue;
-    m.swap_rows(row, pivot);
+  for (int row = 0; row < m.rows(); ++row) {
+    std::vector<int> in_row(static_cast<std::size_t>(m.rows()), 0),
+        in_column(static_cast<std::size_t>(m.columns()), 0);
+    for (int r = row; r < m.rows(); ++r)
+      for (int c = 0; c < m.columns(); ++c)
+        if (!done[static_cast<std::size_t>(c)] && !fmpq_poly_is_zero(m.at(r, c))) {
+          ++in_row[static_cast<std::size_t>(r)];
+          ++in_column[static_cast<std::size_t>(c)];
+        }
+    int pivot_row = -1, pivot_column = -1;
+    long best_cost = 0;
+    slong best_size = 0;
+    for (int r = row; r < m.rows(); ++r)
+      for (int c = 0; c < m.columns(); ++c) {
+        if (done[static_cast<std::size_t>(c)] || fmpq_poly_is_zero(m.at(r, c))) continue;
+        const long cost = static_cast<long>(in_row[static_cast<std::size_t>(r)] - 1) *
+                          (in_column[static_cast<std::size_t>(c)] - 1);
+        if (pivot_row >= 0 && cost > best_cost) continue;
+        const slong size = size_of(m.at(r, c));
+        if (pivot_row >= 0 && cost == best_cost && size >= best_size) continue;
+        pivot_row = r;
+        pivot_column = c;
+        best_cost = cost;
+        best_size = size;
+      }
+    if (pivot_row < 0) break;
+    const int c = pivot_column;
+    m.swap_rows(row, pivot_row);
     field.inverse(inverse.value, m.at(row, c));
-    for (int j = c; j < m.columns(); ++j) field.mul(m.at(row, j), m.at(row, j), inverse.value);
+    for (int j = 0; j < m.columns(); ++j)
+      if (!fmpq_poly_is_zero(m.at(row, j))) field.mul(m.at(row, j), m.at(row, j), inverse.value);
     for (int r = 0; r < m.rows(); ++r) {
       if (r == row || fmpq_poly_is_zero(m.at(r, c))) continue;
       fmpq_poly_set(factor.value, m.at(r, c));
-      for (int j = c; j < m.columns(); ++j) {
+      for (int j = 0; j < m.columns(); ++j) {
         if (fmpq_poly_is_zero(m.at(row, j))) continue;
         field.mul(product.value, factor.value, m.at(row, j));
         fmpq_poly_sub(m.at(r, j), m.at(r, j), product.value);
       }
     }
+    done[static_cast<std::size_t>(c)] = 1;
     pivots.push_back(c);
-    ++row;
   }
   return pivots;
 }
