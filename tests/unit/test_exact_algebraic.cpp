@@ -35,6 +35,49 @@ std::string four_delta_d(long a, int digits) {
   return s;
 }
 
+// MPFR value -> fixed notation with `decimals` digits after the point.
+std::string fixed_decimal(mpfr_t x, int decimals) {
+  char* text = nullptr;
+  mpfr_asprintf(&text, "%.*Rf", decimals, x);
+  std::string s(text);
+  mpfr_free_str(text);
+  return s;
+}
+
+// Disk 1 in the bottom-left corner, disk 2 at (x, y) at distance d = 1/2 from it.
+ConfigurationInput corner_pair(const std::string& x, const std::string& y, int digits) {
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(0, Side::Left)};
+  in.d = "0.5";
+  in.points = {{"0", "0"}, {x, y}};
+  in.given = {{"0", "0"}, {x.substr(0, 32), y.substr(0, 32)}};
+  in.digits = digits;
+  return in;
+}
+
+// d = 1/2: P = 2x - 1.
+MinimalPolynomial one_half() {
+  MinimalPolynomial p;
+  p.found = true;
+  p.polynomial.coefficients = {"-1", "2"};
+  p.root = {"49/100", "51/100"};
+  return p;
+}
+
+// Two disks on the bottom side at (a, 0) and (b, 0) = (a + d, 0).
+ConfigurationInput bottom_pair(const std::string& d, const std::string& a, const std::string& b,
+                               int digits) {
+  ConfigurationInput in;
+  in.n = 2;
+  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
+  in.d = d;
+  in.points = {{a, "0"}, {b, "0"}};
+  in.given = {{a.substr(0, 34), "0"}, {b.substr(0, 34), "0"}};
+  in.digits = digits;
+  return in;
+}
+
 TEST(ExactAlgebraic, SquareRootOfTwoAndTheGoldenRatio) {
   mpfr_t x;
   mpfr_init2(x, 600);
@@ -125,18 +168,7 @@ TEST(ExactConfiguration, CoordinatesOutsideQdSqrt3GetAQuadraticExtension) {
   const auto e = b.find('e');
   const std::string mantissa = b.substr(0, e);
   const std::string fixed = "0." + mantissa.substr(0, 1) + mantissa.substr(2);
-  MinimalPolynomial p;
-  p.found = true;
-  p.polynomial.coefficients = {"-1", "2"};
-  p.root = {"49/100", "51/100"};
-  ConfigurationInput in;
-  in.n = 2;
-  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(0, Side::Left)};
-  in.d = "0.5";
-  in.points = {{"0", "0"}, {fixed, fixed}};
-  in.given = {{"0", "0"}, {fixed.substr(0, 32), fixed.substr(0, 32)}};
-  in.digits = digits;
-  const ExactConfiguration c = prove_existence(in, p);
+  const ExactConfiguration c = prove_existence(corner_pair(fixed, fixed, digits), one_half());
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 4);  // [Q(sqrt3, sqrt2) : Q]
   EXPECT_LT(c.largest_offset, 1e-25);
@@ -158,27 +190,9 @@ TEST(ExactConfiguration, CoordinatesBeyondAQuadraticExtensionGetTheirOwnField) {
   mpfr_ui_sub(b, 1, b, MPFR_RNDN);
   mpfr_sub_d(b, b, 0.75, MPFR_RNDN);  // 1/4 - a^2
   mpfr_sqrt(b, b, MPFR_RNDN);
-  auto fixed = [](mpfr_t x, int decimals) {
-    char* text = nullptr;
-    mpfr_asprintf(&text, "%.*Rf", decimals, x);
-    std::string s(text);
-    mpfr_free_str(text);
-    return s;
-  };
-  const std::string a_text = fixed(a, 2 * digits), b_text = fixed(b, 2 * digits);
+  const std::string a_text = fixed_decimal(a, 2 * digits), b_text = fixed_decimal(b, 2 * digits);
   mpfr_clears(a, b, static_cast<mpfr_ptr>(nullptr));
-  MinimalPolynomial p;
-  p.found = true;
-  p.polynomial.coefficients = {"-1", "2"};
-  p.root = {"49/100", "51/100"};
-  ConfigurationInput in;
-  in.n = 2;
-  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(0, Side::Left)};
-  in.d = "0.5";
-  in.points = {{"0", "0"}, {a_text, b_text}};
-  in.given = {{"0", "0"}, {a_text.substr(0, 32), b_text.substr(0, 32)}};
-  in.digits = digits;
-  const ExactConfiguration c = prove_existence(in, p);
+  const ExactConfiguration c = prove_existence(corner_pair(a_text, b_text, digits), one_half());
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 12);
   EXPECT_LT(c.largest_offset, 1e-25);
@@ -211,15 +225,8 @@ TEST(ExactConfiguration, ACoordinateWithALargeDenominatorIsFoundAsItsMultipleByP
   mpfr_div_2ui(a, a, 20, MPFR_RNDN);
   mpfr_neg(a, a, MPFR_RNDN);
   mpfr_add(term, a, d, MPFR_RNDN);
-  auto fixed = [](mpfr_t x, int decimals) {
-    char* text = nullptr;
-    mpfr_asprintf(&text, "%.*Rf", decimals, x);
-    std::string s(text);
-    mpfr_free_str(text);
-    return s;
-  };
-  const std::string d_text = fixed(d, 2 * digits), a_text = fixed(a, 2 * digits),
-                    b_text = fixed(term, 2 * digits);
+  const std::string d_text = fixed_decimal(d, 2 * digits), a_text = fixed_decimal(a, 2 * digits),
+                    b_text = fixed_decimal(term, 2 * digits);
   for (mpfr_ptr v : {y, d, slope, a, term}) mpfr_clear(v);
   ASSERT_GT(std::stod(a_text), 0.3);  // both centres well inside the bottom side
   ASSERT_LT(std::stod(b_text), 0.7);
@@ -227,14 +234,7 @@ TEST(ExactConfiguration, ACoordinateWithALargeDenominatorIsFoundAsItsMultipleByP
   poly.found = true;
   for (long c : p) poly.polynomial.coefficients.push_back(std::to_string(c));
   poly.root = {"1637/10000", "1639/10000"};  // P's only real root (y^11 = 3 has one)
-  ConfigurationInput in;
-  in.n = 2;
-  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
-  in.d = d_text;
-  in.points = {{a_text, "0"}, {b_text, "0"}};
-  in.given = {{a_text.substr(0, 34), "0"}, {b_text.substr(0, 34), "0"}};
-  in.digits = digits;
-  const ExactConfiguration c = prove_existence(in, poly);
+  const ExactConfiguration c = prove_existence(bottom_pair(d_text, a_text, b_text, digits), poly);
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 22);  // Q(d, sqrt3): sqrt3 is not in Q(d), of odd degree
   EXPECT_LT(c.largest_offset, 1e-25);
@@ -263,15 +263,8 @@ TEST(ExactConfiguration, ACoordinateOfLargeHeightIsFoundAsARootOfItsMinimalPolyn
   mpfr_div_ui(b, b, 10, MPFR_RNDN);
   mpfr_add(d, d, b, MPFR_RNDN);
   mpfr_add(b, a, d, MPFR_RNDN);
-  auto fixed = [](mpfr_t x, int decimals) {
-    char* text = nullptr;
-    mpfr_asprintf(&text, "%.*Rf", decimals, x);
-    std::string s(text);
-    mpfr_free_str(text);
-    return s;
-  };
-  const std::string d_text = fixed(d, 2 * digits), a_text = fixed(a, 2 * digits),
-                    b_text = fixed(b, 2 * digits);
+  const std::string d_text = fixed_decimal(d, 2 * digits), a_text = fixed_decimal(a, 2 * digits),
+                    b_text = fixed_decimal(b, 2 * digits);
   for (mpfr_ptr v : {y, d, a, b}) mpfr_clear(v);
   ASSERT_GT(std::stod(a_text), 0.3);
   ASSERT_LT(std::stod(b_text), 0.8);
@@ -296,14 +289,7 @@ TEST(ExactConfiguration, ACoordinateOfLargeHeightIsFoundAsARootOfItsMinimalPolyn
   }
   mpz_clears(coefficient, t, nullptr);
   poly.root = {"3000000000011/10000000000000", "3000000000012/10000000000000"};  // y = 1.10503..
-  ConfigurationInput in;
-  in.n = 2;
-  in.bonds = {Bond::pair(0, 1), Bond::wall(0, Side::Bottom), Bond::wall(1, Side::Bottom)};
-  in.d = d_text;
-  in.points = {{a_text, "0"}, {b_text, "0"}};
-  in.given = {{a_text.substr(0, 34), "0"}, {b_text.substr(0, 34), "0"}};
-  in.digits = digits;
-  const ExactConfiguration c = prove_existence(in, poly);
+  const ExactConfiguration c = prove_existence(bottom_pair(d_text, a_text, b_text, digits), poly);
   ASSERT_TRUE(c.proven) << c.reason;
   EXPECT_EQ(c.field.degree(), 22);  // Q(d, sqrt3)
   EXPECT_LT(c.largest_offset, 1e-25);
