@@ -974,6 +974,12 @@ ExactConfiguration prove_existence(const ConfigurationInput& in, const MinimalPo
   out.points = found;
   const arb_struct* t2 = k0.t2.value;
   if (search.beyond()) {
+    FmpzPoly kpoly;  // irreducible by construction (rnfequation of an irreducible factor): checked
+    flint::poly_from_strings(kpoly.value, search.beyond_field().coefficients);
+    if (!irreducible(kpoly.value)) {
+      out.reason = "the extended field's polynomial is not irreducible";
+      return out;
+    }
     out.d_in_field = search.to_current(out.d_in_field);
     out.sqrt3_in_field = search.to_current(out.sqrt3_in_field);
     out.field = search.beyond_field();

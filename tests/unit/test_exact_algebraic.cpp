@@ -155,7 +155,7 @@ TEST(ExactAlgebraic, BadInputIsRefused) {
 // Two disks, d = 1/2: A at the corner (0,0) on the bottom and left walls, B at distance d on
 // the 45-degree line, B = (sqrt2/4, sqrt2/4). B's coordinates are outside Q(d, sqrt3) = Q(sqrt3):
 // statement (I) needs the quadratic extension Q(sqrt3)(w), w = sqrt2/4, w^2 = 1/8, a field of
-// degree 4 (its generator's minimal polynomial is the checked irreducible one).
+// degree 4 (its polynomial checked irreducible).
 TEST(ExactConfiguration, CoordinatesOutsideQdSqrt3GetAQuadraticExtension) {
   const int digits = 120;
   mpfr_t x;
