@@ -70,11 +70,11 @@ for cert in "$@"; do
       continue
     fi
   fi
-  # parisize: initial PARI stack; parisizemax: the stack may grow to 1 GB (big fields, many
+  # parisize: initial PARI stack; parisizemax: the stack may grow to 4 GB (big fields, many
   # points); debugmem=0: no "increasing stack size" warnings. stdin is /dev/null, so gp exits
   # even if the checker never reaches its quit(). CHECK_ATLAS_DIR: empty = the default directory.
   CERT_FILE="$cert" CHECK_ATLAS_DIR="$atlas" timeout -k 5 "$time_limit" "$GP" -q -f --default parisize=64M \
-    --default parisizemax=1G --default debugmem=0 "$checker" </dev/null 2>&1 | tee "$tmp"
+    --default parisizemax=4G --default debugmem=0 "$checker" </dev/null 2>&1 | tee "$tmp"
   rc=${PIPESTATUS[0]}
   if [ "$rc" -eq 124 ] || [ "$rc" -eq 137 ]; then
     reject "$cert" "time" "no verdict within the time limit of $time_limit s (--time-limit)"
