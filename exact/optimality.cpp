@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 
+#include "exact/field_kernel.hpp"
 #include "exact/flint_tools.hpp"
 
 namespace tripack::exact {
@@ -41,68 +42,6 @@ class Matrix {
   int rows_, columns_;
   std::vector<std::unique_ptr<FmpqPoly>> cells_;
 };
-
-// The size of an element, for choosing pivots: its length times its largest numerator's bits, plus
-// its denominator's bits.
-slong size_of(const fmpq_poly_struct* a) {
-  return fmpq_poly_length(a) * FLINT_ABS(_fmpz_vec_max_bits(a->coeffs, a->length)) +
-         static_cast<slong>(fmpz_bits(a->den));
-}
-
-// Gauss-Jordan over K in place: each pivot row gets 1 in its pivot column, which becomes 0 in every
-// other row. The pivots are chosen as in sparse LU (Markowitz): the nonzero whose row and column
-// have the fewest other nonzeros, ties broken by the smaller element. G is sparse (at most 4
-// nonzeros per bond) and K's elements are large, so fill-in, not the count of operations, is the
-// cost. Returns the pivot column of each pivot row (rows 0, 1, ... after the swaps).
-std::vector<int> row_reduce(Matrix& m, const flint::Field& field) {
-  std::vector<int> pivots;
-  std::vector<char> done(static_cast<std::size_t>(m.columns()), 0);
-  FmpqPoly inverse, factor, product;
-  for (int row = 0; row < m.rows(); ++row) {
-    std::vector<int> in_row(static_cast<std::size_t>(m.rows()), 0),
-        in_column(static_cast<std::size_t>(m.columns()), 0);
-    for (int r = row; r < m.rows(); ++r)
-      for (int c = 0; c < m.columns(); ++c)
-        if (!done[static_cast<std::size_t>(c)] && !fmpq_poly_is_zero(m.at(r, c))) {
-          ++in_row[static_cast<std::size_t>(r)];
-          ++in_column[static_cast<std::size_t>(c)];
-        }
-    int pivot_row = -1, pivot_column = -1;
-    long best_cost = 0;
-    slong best_size = 0;
-    for (int r = row; r < m.rows(); ++r)
-      for (int c = 0; c < m.columns(); ++c) {
-        if (done[static_cast<std::size_t>(c)] || fmpq_poly_is_zero(m.at(r, c))) continue;
-        const long cost = static_cast<long>(in_row[static_cast<std::size_t>(r)] - 1) *
-                          (in_column[static_cast<std::size_t>(c)] - 1);
-        if (pivot_row >= 0 && cost > best_cost) continue;
-        const slong size = size_of(m.at(r, c));
-        if (pivot_row >= 0 && cost == best_cost && size >= best_size) continue;
-        pivot_row = r;
-        pivot_column = c;
-        best_cost = cost;
-        best_size = size;
-      }
-    if (pivot_row < 0) break;
-    const int c = pivot_column;
-    m.swap_rows(row, pivot_row);
-    field.inverse(inverse.value, m.at(row, c));
-    for (int j = 0; j < m.columns(); ++j)
-      if (!fmpq_poly_is_zero(m.at(row, j))) field.mul(m.at(row, j), m.at(row, j), inverse.value);
-    for (int r = 0; r < m.rows(); ++r) {
-      if (r == row || fmpq_poly_is_zero(m.at(r, c))) continue;
-      fmpq_poly_set(factor.value, m.at(r, c));
-      for (int j = 0; j < m.columns(); ++j) {
-        if (fmpq_poly_is_zero(m.at(row, j))) continue;
-        field.mul(product.value, factor.value, m.at(row, j));
-        fmpq_poly_sub(m.at(r, j), m.at(r, j), product.value);
-      }
-    }
-    done[static_cast<std::size_t>(c)] = 1;
-    pivots.push_back(c);
-  }
-  return pivots;
-}
 
 using Vector = std::vector<std::unique_ptr<FmpqPoly>>;  // a vector of elements of K, one a bond
 
@@ -152,24 +91,26 @@ Matrix transposed_bond_matrix(const ConfigurationInput& in, const ExactConfigura
   return gt;
 }
 
-// The self-stresses from G^T's reduced row echelon form: one basis vector per free column.
-std::vector<Vector> self_stress_basis(Matrix& reduced, const std::vector<int>& pivots, int bonds) {
-  std::vector<int> free;
-  {
-    std::set<int> pivot_set(pivots.begin(), pivots.end());
-    for (int c = 0; c < bonds; ++c)
-      if (!pivot_set.count(c)) free.push_back(c);
-  }
+// The self-stresses {s : G^T s = 0}: a basis over K by exact/field_kernel.hpp (elimination
+// modulo primes, verified over K), one vector per free bond.
+std::vector<Vector> self_stress_basis(Matrix& gt, const FieldKernel& kernel) {
   std::vector<Vector> basis;
-  for (int f : free) {
-    Vector v = zero_vector(bonds);
-    fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
-    for (std::size_t r = 0; r < pivots.size(); ++r)
-      fmpq_poly_neg(v[static_cast<std::size_t>(pivots[r])]->value,
-                    reduced.at(static_cast<int>(r), f));
-    basis.push_back(std::move(v));
+  for (const auto& v : kernel.basis) {
+    Vector vector = zero_vector(gt.columns());
+    for (std::size_t b = 0; b < v.size(); ++b)
+      flint::fmpq_poly_from_strings(vector[b]->value, v[b].coefficients);
+    basis.push_back(std::move(vector));
   }
   return basis;
+}
+
+// G^T's rows as strings, for exact/field_kernel.hpp.
+std::vector<std::vector<RationalPolynomial>> rows_of(Matrix& m) {
+  std::vector<std::vector<RationalPolynomial>> rows(static_cast<std::size_t>(m.rows()));
+  for (int r = 0; r < m.rows(); ++r)
+    for (int c = 0; c < m.columns(); ++c)
+      rows[static_cast<std::size_t>(r)].push_back(flint::strings_from_fmpq_poly(m.at(r, c)));
+  return rows;
 }
 
 // The combination of the basis: one basis vector (sign made positive), or the least-squares fit
@@ -274,22 +215,26 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
   const int bonds = static_cast<int>(in.bonds.size());
   out.columns = columns;
   Matrix gt = transposed_bond_matrix(in, config, field, column_of);
-  Matrix reduced(columns, bonds);
-  for (int r = 0; r < columns; ++r)
-    for (int c = 0; c < bonds; ++c) fmpq_poly_set(reduced.at(r, c), gt.at(r, c));
-  const std::vector<int> pivots = row_reduce(reduced, field);
-  out.rank = static_cast<int>(pivots.size());
+  // rank G = 2h: proven by a nonzero minor modulo a prime (G^T's pivot columns), and with the
+  // kernel verified over K it is the rank over K exactly.
+  const FieldKernel kernel = kernel_over_field(rows_of(gt), config.field, true);
+  out.rank = kernel.rank;
   out.stresses = bonds - out.rank;
   if (out.rank < columns) {
-    out.reason = fmt::format("G has rank {} < {} over K: the held disks have a first-order motion",
-                             out.rank, columns);
+    out.reason = fmt::format(
+        "G has rank {} < {} modulo primes: the held disks may have a first-order motion", out.rank,
+        columns);
     return out;
   }
   if (out.stresses == 0) {
     out.reason = "no self-stress (G^T is injective)";
     return out;
   }
-  const std::vector<Vector> basis = self_stress_basis(reduced, pivots, bonds);
+  if (!kernel.reason.empty()) {
+    out.reason = "the self-stresses over K: " + kernel.reason;
+    return out;
+  }
+  const std::vector<Vector> basis = self_stress_basis(gt, kernel);
   Arb t0, value;
   flint::ball_of(t0.value, config.embedding, prec);
   const auto coefficients =

@@ -1,9 +1,10 @@
 // Statement (II) of docs/exact.md at the exact configuration of statement (I): the bond-opening
 // map G of the held disks (rows: (x_i - x_j, y_i - y_j) for a pair bond, the inward normals
-// (0, 1), (sqrt3, -1), (-sqrt3, -1) for the walls) has full column rank over K, computed by exact
-// elimination in K; and a stress s over K with G^T s = 0 exactly is strictly positive at the
-// embedding (Arb). By docs/certified.md "Why this proves local optimality", the held disks are
-// then a strict local maximum of d.
+// (0, 1), (sqrt3, -1), (-sqrt3, -1) for the walls) has full column rank over K, proven by a minor
+// that is a unit modulo a prime (exact/field_kernel.hpp); and a stress s over K with G^T s = 0
+// exactly (from the self-stresses found modulo primes and verified over K) is strictly positive
+// at the embedding (Arb). By docs/certified.md "Why this proves local optimality", the held disks
+// are then a strict local maximum of d.
 #pragma once
 
 #include <string>
