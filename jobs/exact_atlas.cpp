@@ -32,8 +32,7 @@ std::string exact_table_line(const pipeline::ExactResult& r) {
   return table_line(
       {std::to_string(r.n), r.label, p.found ? std::to_string(p.polynomial.degree()) : "",
        p.found ? p.polynomial.pari("x") : "", p.found ? p.root.low : "", p.found ? p.root.high : "",
-       r.proof, r.reason,
-       fmt::format("{:.2f}", r.seconds_polish + r.seconds_polynomial + r.seconds_existence)});
+       r.proof, r.reason, fmt::format("{:.2f}", r.seconds())});
 }
 
 }  // namespace

@@ -184,7 +184,7 @@ ExactResult exact_of_packing(const Packing& packing, const std::string& label,
     const auto t3 = Clock::now();
     result.optimality =
         exact::prove_strict_optimality(input, *result.configuration, analysis.stress.forces);
-    result.seconds_existence += seconds_since(t3);
+    result.seconds_optimality += seconds_since(t3);
     if (result.optimality->proven) {
       result.proof = "exact";
       result.reason = fmt::format("P from {} digits, the field and coordinates from {}{}",

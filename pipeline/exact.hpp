@@ -49,7 +49,10 @@ struct ExactResult {
   std::string given_tolerance;      // the claimed distance to the file's points ("1e-25")
   // "exact" (statements I and II), "existence" (I), "none"; reason: what stopped it.
   std::string proof = "none", reason;
-  double seconds_polish = 0, seconds_polynomial = 0, seconds_existence = 0;
+  double seconds_polish = 0, seconds_polynomial = 0, seconds_existence = 0, seconds_optimality = 0;
+  double seconds() const {
+    return seconds_polish + seconds_polynomial + seconds_existence + seconds_optimality;
+  }
 };
 
 // What `tripack exact` returns: one result per file.

@@ -9,10 +9,6 @@
 
 namespace tripack::report::results {
 
-inline double exact_seconds(const pipeline::ExactResult& r) {
-  return r.seconds_polish + r.seconds_polynomial + r.seconds_existence;
-}
-
 // atlas-exact.csv's columns (n, label, degree, polynomial, root_low, root_high, proof, reason,
 // seconds) first, then what the table does not keep.
 inline Tree exact_row(const pipeline::ExactResult& r) {
@@ -28,7 +24,7 @@ inline Tree exact_row(const pipeline::ExactResult& r) {
   j["root_high"] = p.found ? Tree(p.root.high) : Tree(nullptr);
   j["proof"] = r.proof;
   j["reason"] = r.reason;
-  j["seconds"] = std::round(exact_seconds(r) * 100) / 100;
+  j["seconds"] = std::round(r.seconds() * 100) / 100;
   j["file"] = r.file;
   j["digits"] = p.found ? Tree(p.digits) : Tree(nullptr);
   j["confirmed_digits"] = p.found ? Tree(p.confirmed_digits) : Tree(nullptr);
@@ -83,9 +79,10 @@ struct View<pipeline::ExactRun> {
             "({} self-stresses; smallest/largest force {:.3g}): a strict local optimum\n",
             r.optimality->rank, r.optimality->stresses, r.optimality->smallest_stress_ratio);
       if (!r.reason.empty()) out << "  " << r.reason << "\n";
-      out << fmt::format("  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f})\n",
-                         exact_seconds(r), r.seconds_polish, r.seconds_polynomial,
-                         r.seconds_existence);
+      out << fmt::format(
+          "  {:.2f} s (polish {:.2f}, polynomial {:.2f}, existence {:.2f}, optimality {:.2f})\n",
+          r.seconds(), r.seconds_polish, r.seconds_polynomial, r.seconds_existence,
+          r.seconds_optimality);
     }
   }
 };
