@@ -13,6 +13,7 @@ namespace tripack::exact {
 namespace {
 
 using flint::Arb;
+using flint::FmpqPoly;
 using flint::FmpzPoly;
 
 // "c*v^k" terms, highest power first, in PARI/GP syntax.
@@ -106,7 +107,19 @@ int IntegerPolynomial::height_digits() const {
 }
 
 std::string RationalPolynomial::pari(const std::string& variable) const {
-  return pari_of(coefficients, variable);
+  // Over the common denominator, "(N(t))/D": the coordinates and stresses of a large field share
+  // most of their denominators, which written per coefficient were half of a certificate.
+  FmpqPoly q;
+  flint::fmpq_poly_from_strings(q.value, coefficients);
+  if (fmpz_is_one(fmpq_poly_denref(q.value))) return pari_of(coefficients, variable);
+  FmpzPoly numerator;
+  fmpq_poly_get_numerator(numerator.value, q.value);
+  const std::string over =
+      pari_of(flint::strings_from_poly(numerator.value).coefficients, variable);
+  char* den = fmpz_get_str(nullptr, 10, fmpq_poly_denref(q.value));
+  std::string out = fmt::format("({})/{}", over, den);
+  flint_free(den);
+  return out;
 }
 
 MinimalPolynomial minimal_polynomial(const std::string& value, int digits, int max_degree) {

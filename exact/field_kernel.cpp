@@ -77,15 +77,26 @@ void read_problem(Problem& problem, const std::vector<std::vector<RationalPolyno
   }
 }
 
-// The reduced row echelon form modulo p (leftmost pivots, each a unit of F_p[t]/(K)): its
-// pivot columns and, per free column k and pivot row i, the coefficients of -R[i][free_k], the
-// kernel vector's entry at pivot column i.
+// The reduced row echelon form modulo p (leftmost pivots, each a unit of F_p[t]/(K)): its pivot
+// columns and, for each wanted kernel vector k (its values c_k at the free columns) and pivot row
+// i, the coefficients of -sum_f c_k[f] R[i][f], the vector's entry at pivot column i.
 struct Image {
   mp_limb_t prime = 0;
-  bool usable = false;  // false: a nonzero non-unit was met where a pivot was needed
+  bool usable = false;  // false: a nonzero non-unit where a pivot was needed, or a value's
+                        // denominator divisible by p
   std::vector<int> pivots;
   std::vector<mp_limb_t> residues;  // [k][i][j], j < degree
 };
+
+// A rational's image modulo p; false when p divides its denominator.
+bool rational_mod(mp_limb_t& out, const fmpq_t q, mp_limb_t p) {
+  const mp_limb_t den = fmpz_fdiv_ui(fmpq_denref(q), p);
+  if (den == 0) return false;
+  out = n_mulmod2_preinv(fmpz_fdiv_ui(fmpq_numref(q), p), n_invmod(den, p), p, n_preinvert_limb(p));
+  return true;
+}
+
+using FreeValues = std::vector<std::vector<std::unique_ptr<Fmpq>>>;  // [vector][free column]
 
 class Ring {
  public:
@@ -114,7 +125,7 @@ class Ring {
   NmodPoly modulus_, inverse_;
 };
 
-Image eliminate_modulo(const Problem& problem, mp_limb_t p) {
+Image eliminate_modulo(const Problem& problem, mp_limb_t p, const FreeValues& values) {
   Image image;
   image.prime = p;
   const Ring ring(p, problem.modulus.value);
@@ -158,25 +169,29 @@ Image eliminate_modulo(const Problem& problem, mp_limb_t p) {
     image.pivots.push_back(c);
     ++row;
   }
-  const std::vector<int> free = [&] {
-    std::vector<int> f;
-    std::size_t next = 0;
-    for (int c = 0; c < columns; ++c) {
-      if (next < image.pivots.size() && image.pivots[next] == c)
-        ++next;
-      else
-        f.push_back(c);
-    }
-    return f;
-  }();
-  image.residues.reserve(free.size() * image.pivots.size() *
+  const std::size_t free = static_cast<std::size_t>(columns) - image.pivots.size();
+  std::vector<mp_limb_t> c(free);
+  image.residues.reserve(values.size() * image.pivots.size() *
                          static_cast<std::size_t>(problem.degree));
-  for (int f : free)
+  for (const auto& vector : values) {
+    if (vector.size() != free) return image;  // the pivots differ from the shape's
+    for (std::size_t f = 0; f < free; ++f)
+      if (!rational_mod(c[f], vector[f]->value, p)) return image;
     for (std::size_t i = 0; i < image.pivots.size(); ++i) {
-      nmod_poly_neg(product.value, at(static_cast<int>(i), f));
+      nmod_poly_zero(product.value);
+      std::size_t f = 0;
+      for (int column = 0; column < columns; ++column) {
+        if (std::binary_search(image.pivots.begin(), image.pivots.end(), column)) continue;
+        if (c[f] != 0) {
+          nmod_poly_scalar_mul_nmod(factor.value, at(static_cast<int>(i), column), c[f]);
+          nmod_poly_sub(product.value, product.value, factor.value);
+        }
+        ++f;
+      }
       for (int j = 0; j < problem.degree; ++j)
         image.residues.push_back(nmod_poly_get_coeff_ui(product.value, j));
     }
+  }
   image.usable = true;
   return image;
 }
@@ -222,32 +237,28 @@ std::optional<std::vector<std::unique_ptr<Fmpq>>> reconstruct(const std::vector<
 
 // The reconstruction agrees with a further image (a cheap test before the exact one).
 bool agrees_with(const std::vector<std::unique_ptr<Fmpq>>& coefficients, const Image& image) {
-  const mp_limb_t p = image.prime;
-  for (std::size_t index = 0; index < coefficients.size(); ++index) {
-    const fmpq* q = coefficients[index]->value;
-    const mp_limb_t den = fmpz_fdiv_ui(fmpq_denref(q), p);
-    if (den == 0) continue;
-    const mp_limb_t num = fmpz_fdiv_ui(fmpq_numref(q), p);
-    if (n_mulmod2_preinv(num, n_invmod(den, p), p, n_preinvert_limb(p)) != image.residues[index])
+  mp_limb_t r = 0;
+  for (std::size_t index = 0; index < coefficients.size(); ++index)
+    if (rational_mod(r, coefficients[index]->value, image.prime) && r != image.residues[index])
       return false;
-  }
   return true;
 }
 
-// The kernel vectors from the coefficients, each checked A v = 0 over K exactly; empty when one
-// fails.
-std::vector<std::vector<std::unique_ptr<FmpqPoly>>> verified_basis(
-    const Problem& problem, const std::vector<int>& pivots,
+// The kernel vectors from their free values and the reconstructed coefficients, each checked
+// A v = 0 over K exactly; empty when one fails.
+std::vector<std::vector<std::unique_ptr<FmpqPoly>>> verified_vectors(
+    const Problem& problem, const std::vector<int>& pivots, const FreeValues& values,
     const std::vector<std::unique_ptr<Fmpq>>& coefficients) {
   const std::vector<int> free = free_columns(pivots, problem.columns);
   FmpqPoly modulus, sum, product;
   fmpq_poly_set_fmpz_poly(modulus.value, problem.modulus.value);
-  std::vector<std::vector<std::unique_ptr<FmpqPoly>>> basis;
+  std::vector<std::vector<std::unique_ptr<FmpqPoly>>> out;
   std::size_t index = 0;
-  for (int f : free) {
+  for (const auto& vector : values) {
     std::vector<std::unique_ptr<FmpqPoly>> v;
     for (int c = 0; c < problem.columns; ++c) v.push_back(std::make_unique<FmpqPoly>());
-    fmpq_poly_one(v[static_cast<std::size_t>(f)]->value);
+    for (std::size_t f = 0; f < free.size(); ++f)
+      fmpq_poly_set_fmpq(v[static_cast<std::size_t>(free[f])]->value, vector[f]->value);
     for (int pivot : pivots)
       for (int j = 0; j < problem.degree; ++j)
         fmpq_poly_set_coeff_fmpq(v[static_cast<std::size_t>(pivot)]->value, j,
@@ -264,9 +275,9 @@ std::vector<std::vector<std::unique_ptr<FmpqPoly>>> verified_basis(
       fmpq_poly_rem(sum.value, sum.value, modulus.value);
       if (!fmpq_poly_is_zero(sum.value)) return {};
     }
-    basis.push_back(std::move(v));
+    out.push_back(std::move(v));
   }
-  return basis;
+  return out;
 }
 
 // Better image first: the larger rank, then the lexicographically smaller pivots (a prime can
@@ -279,53 +290,79 @@ bool better(const std::vector<int>& a, const std::vector<int>& b) {
 constexpr int max_primes = 20000;  // ~380,000 digits of modulus: heights far beyond any row's
 constexpr int max_unusable = 50;
 
+// The next prime below 2^63 that does not divide K's leading coefficient.
+mp_limb_t next_prime(mp_limb_t p, const Problem& problem) {
+  do p = n_nextprime(p, 1);
+  while (fmpz_fdiv_ui(problem.modulus.value->coeffs + problem.degree, p) == 0);
+  return p;
+}
+
+constexpr mp_limb_t first_prime = UWORD(1) << 62;
+
 }  // namespace
 
-FieldKernel kernel_over_field(const std::vector<std::vector<RationalPolynomial>>& rows,
-                              const IntegerPolynomial& field, bool require_full_row_rank) {
-  FieldKernel out;
+KernelShape kernel_shape(const std::vector<std::vector<RationalPolynomial>>& rows,
+                         const IntegerPolynomial& field) {
   Problem problem;
   read_problem(problem, rows, field);
-  if (problem.degree < 1) throw std::invalid_argument("kernel_over_field: a field of degree 0");
-  mp_limb_t p = UWORD(1) << 62;
+  KernelShape out;
+  mp_limb_t p = first_prime;
+  int usable = 0;
+  while (usable < 3 && out.primes < max_unusable + 3) {
+    p = next_prime(p, problem);
+    ++out.primes;
+    const Image image = eliminate_modulo(problem, p, {});
+    if (!image.usable) continue;
+    if (usable++ == 0 || better(image.pivots, out.pivot_columns)) {
+      out.pivot_columns = image.pivots;
+      out.rank = static_cast<int>(image.pivots.size());
+    }
+    if (out.rank == problem.rows) return out;
+  }
+  if (usable == 0) out.reason = fmt::format("{} primes met a nonzero non-unit pivot", out.primes);
+  return out;
+}
+
+KernelVectors kernel_vectors(const std::vector<std::vector<RationalPolynomial>>& rows,
+                             const IntegerPolynomial& field, const KernelShape& shape,
+                             const std::vector<std::vector<std::string>>& free_values) {
+  Problem problem;
+  read_problem(problem, rows, field);
+  FreeValues values;
+  for (const auto& vector : free_values) {
+    values.emplace_back();
+    for (const auto& text : vector) {
+      values.back().push_back(std::make_unique<Fmpq>());
+      if (fmpq_set_str(values.back().back()->value, text.c_str(), 10) != 0)
+        throw std::invalid_argument("kernel_vectors: not a rational: '" + text + "'");
+      fmpq_canonicalise(values.back().back()->value);
+    }
+  }
+  KernelVectors out;
+  mp_limb_t p = first_prime;
   std::vector<Image> images;
   std::optional<std::vector<std::unique_ptr<Fmpq>>> candidate;
   std::size_t next_attempt = 1;
-  int unusable = 0, tried = 0;
+  int unusable = 0;
   while (out.primes < max_primes) {
-    p = n_nextprime(p, 1);
-    if (fmpz_fdiv_ui(problem.modulus.value->coeffs + problem.degree, p) == 0) continue;
+    p = next_prime(p, problem);
     ++out.primes;
-    Image image = eliminate_modulo(problem, p);
-    if (!image.usable) {
+    Image image = eliminate_modulo(problem, p, values);
+    if (!image.usable || image.pivots != shape.pivot_columns) {
       if (++unusable > max_unusable) {
-        out.reason = fmt::format("{} primes met a nonzero non-unit pivot", unusable);
+        out.reason = fmt::format("{} primes without the shape's pivots", unusable);
         return out;
       }
       continue;
     }
-    ++tried;
-    if (images.empty() || better(image.pivots, images[0].pivots)) {
-      images.clear();
-      candidate.reset();
-      next_attempt = 1;
-      out.rank = static_cast<int>(image.pivots.size());
-      out.pivot_columns = image.pivots;
-    } else if (image.pivots != images[0].pivots) {
-      continue;  // a prime where the matrix lost rank
-    }
-    if (require_full_row_rank && out.rank < problem.rows && tried >= 3) {
-      out.reason = fmt::format("rank {} < {} modulo {} primes", out.rank, problem.rows, tried);
-      return out;
-    }
     if (candidate && !agrees_with(*candidate, image)) candidate.reset();
-    if (candidate && (!require_full_row_rank || out.rank == problem.rows)) {
-      auto basis = verified_basis(problem, out.pivot_columns, *candidate);
-      if (!basis.empty() || out.pivot_columns.size() == static_cast<std::size_t>(problem.columns)) {
-        for (const auto& v : basis) {
+    if (candidate) {
+      auto vectors = verified_vectors(problem, shape.pivot_columns, values, *candidate);
+      if (!vectors.empty() || values.empty()) {
+        for (const auto& v : vectors) {
           std::vector<RationalPolynomial> vector;
           for (const auto& e : v) vector.push_back(flint::strings_from_fmpq_poly(e->value));
-          out.basis.push_back(std::move(vector));
+          out.vectors.push_back(std::move(vector));
         }
         return out;
       }
@@ -337,7 +374,27 @@ FieldKernel kernel_over_field(const std::vector<std::vector<RationalPolynomial>>
       next_attempt = images.size() + std::max<std::size_t>(1, images.size() / 4);
     }
   }
-  out.reason = fmt::format("no verified kernel from {} primes", out.primes);
+  out.reason = fmt::format("no verified kernel vector from {} primes", out.primes);
+  return out;
+}
+
+FieldKernel kernel_over_field(const std::vector<std::vector<RationalPolynomial>>& rows,
+                              const IntegerPolynomial& field) {
+  FieldKernel out;
+  out.shape = kernel_shape(rows, field);
+  if (!out.shape.reason.empty()) {
+    out.reason = out.shape.reason;
+    return out;
+  }
+  const int columns = rows.empty() ? 0 : static_cast<int>(rows[0].size());
+  const std::size_t free = static_cast<std::size_t>(columns) - out.shape.pivot_columns.size();
+  std::vector<std::vector<std::string>> identity(free);
+  for (std::size_t f = 0; f < free; ++f)
+    for (std::size_t g = 0; g < free; ++g) identity[f].emplace_back(f == g ? "1" : "0");
+  KernelVectors vectors = kernel_vectors(rows, field, out.shape, identity);
+  out.basis = std::move(vectors.vectors);
+  out.primes = vectors.primes;
+  out.reason = vectors.reason;
   return out;
 }
 

@@ -14,23 +14,41 @@
 
 namespace tripack::exact {
 
-struct FieldKernel {
-  // The rank modulo the best prime seen, with every pivot a unit of F_p[t]/(K(t)): the pivot
-  // columns' minor is then nonzero over K, so rank >= `rank`, proven. With `basis` verified it is
-  // the rank over K exactly (B - rank independent vectors lie in the kernel).
+// The rank and the pivot columns, from the first prime where every pivot is a unit (from the best
+// of three primes when the rank there is below the row count).
+struct KernelShape {
+  // The pivot columns' minor is a unit modulo a prime, so nonzero over K: rank >= `rank`, proven.
+  // With kernel vectors verified for every free column it is the rank over K exactly.
   int rank = 0;
   std::vector<int> pivot_columns;  // the leftmost independent columns, increasing
-  // One vector per free column f (1 there, 0 at the other free columns), each verified A v = 0
-  // exactly over K; empty when `reason` is set.
+  int primes = 0;                  // primes eliminated modulo
+  std::string reason;              // set when no prime gave a usable elimination
+};
+
+// Kernel vectors (A v = 0 over K, each verified exactly), each given by its values at the free
+// columns (the columns not in `pivot_columns`, increasing): rationals "p/q".
+struct KernelVectors {
+  std::vector<std::vector<RationalPolynomial>> vectors;  // empty when `reason` is set
+  int primes = 0;
+  std::string reason;
+};
+
+// The whole reduced basis: one vector per free column f (1 there, 0 at the other free columns).
+struct FieldKernel {
+  KernelShape shape;
   std::vector<std::vector<RationalPolynomial>> basis;
-  int primes = 0;      // primes eliminated modulo
+  int primes = 0;      // primes eliminated modulo for the basis
   std::string reason;  // why no verified basis (empty on success)
 };
 
 // `rows`: the matrix's rows, every entry an element of K (a rational polynomial, reduced modulo
-// K(t) or not). `field`: K(t), irreducible over Q. With `require_full_row_rank`, a matrix whose
-// rank modulo three primes is below its row count stops there, with `reason` set.
+// K(t) or not). `field`: K(t), irreducible over Q.
+KernelShape kernel_shape(const std::vector<std::vector<RationalPolynomial>>& rows,
+                         const IntegerPolynomial& field);
+KernelVectors kernel_vectors(const std::vector<std::vector<RationalPolynomial>>& rows,
+                             const IntegerPolynomial& field, const KernelShape& shape,
+                             const std::vector<std::vector<std::string>>& free_values);
 FieldKernel kernel_over_field(const std::vector<std::vector<RationalPolynomial>>& rows,
-                              const IntegerPolynomial& field, bool require_full_row_rank);
+                              const IntegerPolynomial& field);
 
 }  // namespace tripack::exact

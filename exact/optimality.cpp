@@ -91,19 +91,6 @@ Matrix transposed_bond_matrix(const ConfigurationInput& in, const ExactConfigura
   return gt;
 }
 
-// The self-stresses {s : G^T s = 0}: a basis over K by exact/field_kernel.hpp (elimination
-// modulo primes, verified over K), one vector per free bond.
-std::vector<Vector> self_stress_basis(Matrix& gt, const FieldKernel& kernel) {
-  std::vector<Vector> basis;
-  for (const auto& v : kernel.basis) {
-    Vector vector = zero_vector(gt.columns());
-    for (std::size_t b = 0; b < v.size(); ++b)
-      flint::fmpq_poly_from_strings(vector[b]->value, v[b].coefficients);
-    basis.push_back(std::move(vector));
-  }
-  return basis;
-}
-
 // G^T's rows as strings, for exact/field_kernel.hpp.
 std::vector<std::vector<RationalPolynomial>> rows_of(Matrix& m) {
   std::vector<std::vector<RationalPolynomial>> rows(static_cast<std::size_t>(m.rows()));
@@ -113,31 +100,52 @@ std::vector<std::vector<RationalPolynomial>> rows_of(Matrix& m) {
   return rows;
 }
 
+// The reduced basis of the self-stresses at t0, numerically: 1 at its free column, 0 at the
+// others, and V_P = -A_P^-1 A_F at the pivot columns P (A_P is square and invertible: G^T has
+// full row rank). Only the combination below is taken from it; the stress itself is exact.
+Eigen::MatrixXd numerical_basis(Matrix& gt, const std::vector<int>& pivots, const arb_t t0,
+                                slong prec) {
+  const auto rows = static_cast<Eigen::Index>(gt.rows());
+  Eigen::MatrixXd a(rows, gt.columns());
+  Arb value;
+  for (int r = 0; r < gt.rows(); ++r)
+    for (int c = 0; c < gt.columns(); ++c) {
+      flint::Field::evaluate(value.value, gt.at(r, c), t0, prec);
+      a(r, c) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
+    }
+  std::vector<int> free;
+  for (int c = 0; c < gt.columns(); ++c)
+    if (!std::binary_search(pivots.begin(), pivots.end(), c)) free.push_back(c);
+  Eigen::MatrixXd a_pivot(rows, rows), a_free(rows, static_cast<Eigen::Index>(free.size()));
+  for (Eigen::Index i = 0; i < rows; ++i)
+    a_pivot.col(i) = a.col(pivots[static_cast<std::size_t>(i)]);
+  for (std::size_t f = 0; f < free.size(); ++f)
+    a_free.col(static_cast<Eigen::Index>(f)) = a.col(free[f]);
+  const Eigen::MatrixXd v_pivot = -a_pivot.partialPivLu().solve(a_free);
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(gt.columns(), a_free.cols());
+  for (Eigen::Index i = 0; i < rows; ++i)
+    basis.row(pivots[static_cast<std::size_t>(i)]) = v_pivot.row(i);
+  for (std::size_t f = 0; f < free.size(); ++f) basis(free[f], static_cast<Eigen::Index>(f)) = 1.0;
+  return basis;
+}
+
 // The combination of the basis: one basis vector (sign made positive), or the least-squares fit
 // of the numerical stress, rescaled to our rows (pair rows carry d, the side walls 2). Empty, with
 // `reason` set, when there are several and no numerical stress.
 std::optional<Eigen::VectorXd> stress_combination(const ConfigurationInput& in,
                                                   const ExactConfiguration& config,
                                                   const flint::Field& field,
-                                                  const std::vector<Vector>& basis,
+                                                  const Eigen::MatrixXd& basis,
                                                   const std::vector<long double>& forces,
                                                   const arb_t t0, slong prec, std::string& reason) {
   const int bonds = static_cast<int>(in.bonds.size());
-  // The basis at t0.
-  Arb value;
-  Eigen::MatrixXd at(bonds, static_cast<Eigen::Index>(basis.size()));
-  for (std::size_t k = 0; k < basis.size(); ++k)
-    for (int c = 0; c < bonds; ++c) {
-      flint::Field::evaluate(value.value, basis[k][static_cast<std::size_t>(c)]->value, t0, prec);
-      at(c, static_cast<Eigen::Index>(k)) = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
-    }
-  Eigen::VectorXd coefficients(static_cast<Eigen::Index>(basis.size()));
-  if (basis.size() == 1) {
-    coefficients(0) = at.col(0).sum() < 0 ? -1.0 : 1.0;
+  Eigen::VectorXd coefficients(basis.cols());
+  if (basis.cols() == 1) {
+    coefficients(0) = basis.col(0).sum() < 0 ? -1.0 : 1.0;
     return coefficients;
   }
   if (forces.size() != static_cast<std::size_t>(bonds)) {
-    reason = fmt::format("{} self-stresses and no numerical stress to combine them", basis.size());
+    reason = fmt::format("{} self-stresses and no numerical stress to combine them", basis.cols());
     return std::nullopt;
   }
   Arb dv;
@@ -151,32 +159,35 @@ std::optional<Eigen::VectorXd> stress_combination(const ConfigurationInput& in,
     const double f = static_cast<double>(forces[static_cast<std::size_t>(b)]);
     target(b) = !bond.is_wall() ? f / d : (bond.side() == Side::Bottom ? f : f / 2);
   }
-  coefficients = at.colPivHouseholderQr().solve(target);
+  coefficients = basis.colPivHouseholderQr().solve(target);
   return coefficients;
 }
 
-// The stress: the combination's coefficients rounded to rationals (52 bits of the largest): the
-// stress is then exact whatever the coefficients are.
-Vector exact_stress(const std::vector<Vector>& basis, const Eigen::VectorXd& coefficients,
-                    int bonds) {
-  FmpqPoly term;
-  flint::Fmpz numerator, denominator;
-  fmpz_one(denominator.value);
-  fmpz_mul_2exp(denominator.value, denominator.value, 52);
-  flint::Fmpq c;
-  Vector stress = zero_vector(bonds);
+// The combination's coefficients rounded to rationals (52 bits of the largest), as the stress's
+// values at the free columns: the stress is then exact whatever the coefficients are.
+std::vector<std::string> free_values(const Eigen::VectorXd& coefficients) {
+  std::vector<std::string> out;
   const double scale = coefficients.cwiseAbs().maxCoeff();
-  for (std::size_t k = 0; k < basis.size(); ++k) {
-    fmpz_set_d(numerator.value,
-               std::round(coefficients(static_cast<Eigen::Index>(k)) / scale * 4503599627370496.0));
-    fmpq_set_fmpz_frac(c.value, numerator.value, denominator.value);
-    for (int b = 0; b < bonds; ++b) {
-      fmpq_poly_scalar_mul_fmpq(term.value, basis[k][static_cast<std::size_t>(b)]->value, c.value);
-      fmpq_poly_add(stress[static_cast<std::size_t>(b)]->value,
-                    stress[static_cast<std::size_t>(b)]->value, term.value);
-    }
+  for (Eigen::Index k = 0; k < coefficients.size(); ++k)
+    out.push_back(fmt::format("{:.0f}/4503599627370496",
+                              std::round(coefficients(k) / scale * 4503599627370496.0)));
+  return out;
+}
+
+// The stress times the positive rational that makes its entries integral with no common factor:
+// the same stress up to scale, written without a denominator per coefficient (t18a's
+// certificate: the stress was 60 MB of its 108).
+void make_primitive(Vector& stress) {
+  flint::Fmpz scale, content, c;
+  fmpz_one(scale.value);
+  for (const auto& s : stress) fmpz_lcm(scale.value, scale.value, fmpq_poly_denref(s->value));
+  for (const auto& s : stress) fmpq_poly_scalar_mul_fmpz(s->value, s->value, scale.value);
+  for (const auto& s : stress) {
+    _fmpz_vec_content(c.value, fmpq_poly_numref(s->value), fmpq_poly_length(s->value));
+    fmpz_gcd(content.value, content.value, c.value);
   }
-  return stress;
+  if (fmpz_is_zero(content.value) || fmpz_is_one(content.value)) return;
+  for (const auto& s : stress) fmpq_poly_scalar_div_fmpz(s->value, s->value, content.value);
 }
 
 // G^T stress = 0 exactly (by construction; checked).
@@ -215,10 +226,14 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
   const int bonds = static_cast<int>(in.bonds.size());
   out.columns = columns;
   Matrix gt = transposed_bond_matrix(in, config, field, column_of);
-  // rank G = 2h: proven by a nonzero minor modulo a prime (G^T's pivot columns), and with the
-  // kernel verified over K it is the rank over K exactly.
-  const FieldKernel kernel = kernel_over_field(rows_of(gt), config.field, true);
-  out.rank = kernel.rank;
+  // rank G = 2h: proven by a minor that is a unit modulo a prime (G^T's pivot columns).
+  const auto rows = rows_of(gt);
+  const KernelShape shape = kernel_shape(rows, config.field);
+  if (!shape.reason.empty()) {
+    out.reason = "the rank of G: " + shape.reason;
+    return out;
+  }
+  out.rank = shape.rank;
   out.stresses = bonds - out.rank;
   if (out.rank < columns) {
     out.reason = fmt::format(
@@ -230,37 +245,48 @@ StrictOptimality prove_strict_optimality(const ConfigurationInput& in,
     out.reason = "no self-stress (G^T is injective)";
     return out;
   }
-  if (!kernel.reason.empty()) {
-    out.reason = "the self-stresses over K: " + kernel.reason;
-    return out;
-  }
-  const std::vector<Vector> basis = self_stress_basis(gt, kernel);
   Arb t0, value;
   flint::ball_of(t0.value, config.embedding, prec);
-  const auto coefficients =
-      stress_combination(in, config, field, basis, forces, t0.value, prec, out.reason);
+  const auto coefficients = stress_combination(
+      in, config, field, numerical_basis(gt, shape.pivot_columns, t0.value, prec), forces, t0.value,
+      prec, out.reason);
   if (!coefficients) return out;
-  const Vector stress = exact_stress(basis, *coefficients, bonds);
+  // The one self-stress with those values at the free columns, found modulo primes and verified
+  // over K (exact/field_kernel.hpp).
+  const KernelVectors found =
+      kernel_vectors(rows, config.field, shape, {free_values(*coefficients)});
+  if (!found.reason.empty()) {
+    out.reason = "the self-stress over K: " + found.reason;
+    return out;
+  }
+  Vector stress = zero_vector(bonds);
+  for (int b = 0; b < bonds; ++b)
+    flint::fmpq_poly_from_strings(stress[static_cast<std::size_t>(b)]->value,
+                                  found.vectors[0][static_cast<std::size_t>(b)].coefficients);
+  make_primitive(stress);
   // Exactly balanced, strictly positive at t0 (Arb).
   if (!balances_exactly(gt, stress, field)) {
     out.reason = "the stress does not balance exactly";
     return out;
   }
-  double smallest = INFINITY, largest = 0;
+  // The stress is integral (make_primitive): its values overflow a double, their ratio does not.
+  Arb smallest, largest;
   for (int b = 0; b < bonds; ++b) {
     flint::Field::evaluate(value.value, stress[static_cast<std::size_t>(b)]->value, t0.value, prec);
     if (!arb_is_positive(value.value)) {
       out.reason =
           fmt::format("the exact stress is not strictly positive on bond {} ({} self-stresses)",
-                      b + 1, basis.size());
+                      b + 1, out.stresses);
       return out;
     }
-    const double v = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
-    smallest = std::min(smallest, v);
-    largest = std::max(largest, v);
+    if (b == 0 || arf_cmp(arb_midref(value.value), arb_midref(smallest.value)) < 0)
+      arb_set(smallest.value, value.value);
+    if (b == 0 || arf_cmp(arb_midref(value.value), arb_midref(largest.value)) > 0)
+      arb_set(largest.value, value.value);
   }
   for (const auto& s : stress) out.stress.push_back(flint::strings_from_fmpq_poly(s->value));
-  out.smallest_stress_ratio = smallest / largest;
+  arb_div(value.value, smallest.value, largest.value, prec);
+  out.smallest_stress_ratio = arf_get_d(arb_midref(value.value), ARF_RND_NEAR);
   out.proven = true;
   return out;
 }

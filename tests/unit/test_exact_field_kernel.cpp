@@ -94,7 +94,8 @@ void expect_reduced_kernel(const std::vector<std::vector<RationalPolynomial>>& a
   ASSERT_TRUE(kernel.reason.empty()) << kernel.reason;
   std::vector<int> free;
   for (int c = 0; c < static_cast<int>(a[0].size()); ++c)
-    if (!std::binary_search(kernel.pivot_columns.begin(), kernel.pivot_columns.end(), c))
+    if (!std::binary_search(kernel.shape.pivot_columns.begin(), kernel.shape.pivot_columns.end(),
+                            c))
       free.push_back(c);
   ASSERT_EQ(kernel.basis.size(), free.size());
   for (std::size_t k = 0; k < kernel.basis.size(); ++k) {
@@ -114,14 +115,21 @@ TEST(FieldKernel, OverTheRationalsIsTheCrossProduct) {
   const IntegerPolynomial k{{"0", "1"}};
   const std::vector<std::vector<RationalPolynomial>> a = {{poly({"1"}), poly({"2"}), poly({"3"})},
                                                           {poly({"4"}), poly({"5"}), poly({"6"})}};
-  const FieldKernel kernel = kernel_over_field(a, k, true);
+  const FieldKernel kernel = kernel_over_field(a, k);
   ASSERT_TRUE(kernel.reason.empty()) << kernel.reason;
-  EXPECT_EQ(kernel.rank, 2);
-  EXPECT_EQ(kernel.pivot_columns, (std::vector<int>{0, 1}));
+  EXPECT_EQ(kernel.shape.rank, 2);
+  EXPECT_EQ(kernel.shape.pivot_columns, (std::vector<int>{0, 1}));
   ASSERT_EQ(kernel.basis.size(), 1u);
   EXPECT_EQ(kernel.basis[0][0].coefficients, (std::vector<std::string>{"1"}));
   EXPECT_EQ(kernel.basis[0][1].coefficients, (std::vector<std::string>{"-2"}));
   EXPECT_EQ(kernel.basis[0][2].coefficients, (std::vector<std::string>{"1"}));
+  // The kernel vector with 3/7 at the free column is 3/7 times it.
+  const KernelVectors scaled = kernel_vectors(a, k, kernel.shape, {{"3/7"}});
+  ASSERT_TRUE(scaled.reason.empty()) << scaled.reason;
+  ASSERT_EQ(scaled.vectors.size(), 1u);
+  EXPECT_EQ(scaled.vectors[0][0].coefficients, (std::vector<std::string>{"3/7"}));
+  EXPECT_EQ(scaled.vectors[0][1].coefficients, (std::vector<std::string>{"-6/7"}));
+  EXPECT_EQ(scaled.vectors[0][2].coefficients, (std::vector<std::string>{"3/7"}));
 }
 
 // A 3 x 5 matrix over Q(2^(1/3)) with small entries (two free columns), and the same matrix with
@@ -137,8 +145,8 @@ TEST(FieldKernel, OverACubicFieldSmallAndTallEntries) {
       {poly({"1", "1"}), poly({"0", "2"}), poly({"3"}), poly({"1", "0", "1"}), poly({"-1"})},
       {poly({"2"}), poly({"1", "-1", "1"}), poly({"0", "0", "5"}), poly({"4"}), poly({"1", "1"})},
       {poly({"0", "3"}), poly({"7"}), poly({"1", "2", "3"}), poly({"-2", "1"}), poly({"0"})}};
-  const FieldKernel small = kernel_over_field(a, k, true);
-  EXPECT_EQ(small.rank, 3);
+  const FieldKernel small = kernel_over_field(a, k);
+  EXPECT_EQ(small.shape.rank, 3);
   expect_reduced_kernel(a, small, t0);
   std::string tall = "1", other = "-";
   tall.append(150, '3').append("7/9").append(140, '1');
@@ -146,15 +154,15 @@ TEST(FieldKernel, OverACubicFieldSmallAndTallEntries) {
   a[0][4] = poly({tall, "1"});
   a[1][2] = poly({other, "0", tall});
   a[2][0] = poly({"5", other});
-  const FieldKernel big = kernel_over_field(a, k, true);
-  EXPECT_EQ(big.rank, 3);
+  const FieldKernel big = kernel_over_field(a, k);
+  EXPECT_EQ(big.shape.rank, 3);
   EXPECT_GT(big.primes, 30) << "hundreds of digits need tens of 62-bit primes";
   expect_reduced_kernel(a, big, t0);
   mpfr_clear(t0);
 }
 
 // Row 3 = row 1 + t row 2 over Q(sqrt 2): rank 2, so a kernel of dimension 2 in 4 columns, found
-// and verified; asked for full row rank, the call stops with the rank in its reason.
+// and verified: the rank over K is then 2 exactly. The shape alone says rank 2 of 3 rows.
 TEST(FieldKernel, ADependentRowLowersTheRank) {
   const IntegerPolynomial k{{"-2", "0", "1"}};
   mpfr_t t0;
@@ -165,13 +173,12 @@ TEST(FieldKernel, ADependentRowLowersTheRank) {
       {poly({"1"}), poly({"0", "1"}), poly({"3"}), poly({"0"})},
       {poly({"2"}), poly({"1"}), poly({"0", "1"}), poly({"1"})},
       {poly({"1", "2"}), poly({"0", "2"}), poly({"5"}), poly({"0", "1"})}};
-  const FieldKernel kernel = kernel_over_field(a, k, false);
-  EXPECT_EQ(kernel.rank, 2);
+  const FieldKernel kernel = kernel_over_field(a, k);
+  EXPECT_EQ(kernel.shape.rank, 2);
   expect_reduced_kernel(a, kernel, t0);
-  const FieldKernel refused = kernel_over_field(a, k, true);
-  EXPECT_EQ(refused.rank, 2);
-  EXPECT_TRUE(refused.basis.empty());
-  EXPECT_NE(refused.reason.find("rank 2 < 3"), std::string::npos) << refused.reason;
+  const KernelShape shape = kernel_shape(a, k);
+  EXPECT_EQ(shape.rank, 2);
+  EXPECT_EQ(shape.primes, 3) << "a rank below the rows is looked at modulo three primes";
   mpfr_clear(t0);
 }
 
@@ -181,11 +188,25 @@ TEST(FieldKernel, UnreducedEntriesAndDenominators) {
   const IntegerPolynomial k{{"-2", "0", "1"}};
   const std::vector<std::vector<RationalPolynomial>> a = {
       {poly({"0", "0", "1/6"}), poly({"0", "-1/3"})}};
-  const FieldKernel kernel = kernel_over_field(a, k, true);
+  const FieldKernel kernel = kernel_over_field(a, k);
   ASSERT_TRUE(kernel.reason.empty()) << kernel.reason;
   ASSERT_EQ(kernel.basis.size(), 1u);
   EXPECT_EQ(kernel.basis[0][0].coefficients, (std::vector<std::string>{"0", "1"}));
   EXPECT_EQ(kernel.basis[0][1].coefficients, (std::vector<std::string>{"1"}));
+}
+
+// A shape that is not the matrix's (pivots 0 and 2 where they are 0 and 1) gives no vector: every
+// prime's elimination disagrees with it, and the call says so rather than return one.
+TEST(FieldKernel, AShapeThatIsNotTheMatrixsGivesNoVector) {
+  const IntegerPolynomial k{{"0", "1"}};
+  const std::vector<std::vector<RationalPolynomial>> a = {{poly({"1"}), poly({"2"}), poly({"3"})},
+                                                          {poly({"4"}), poly({"5"}), poly({"6"})}};
+  KernelShape wrong;
+  wrong.rank = 2;
+  wrong.pivot_columns = {0, 2};
+  const KernelVectors none = kernel_vectors(a, k, wrong, {{"1"}});
+  EXPECT_TRUE(none.vectors.empty());
+  EXPECT_NE(none.reason.find("without the shape's pivots"), std::string::npos) << none.reason;
 }
 
 }  // namespace
