@@ -169,7 +169,8 @@ Image eliminate_modulo(const Problem& problem, mp_limb_t p, const FreeValues& va
     image.pivots.push_back(c);
     ++row;
   }
-  const std::size_t free = static_cast<std::size_t>(columns) - image.pivots.size();
+  const std::vector<int> free_at = free_columns(image.pivots, columns);
+  const std::size_t free = free_at.size();
   std::vector<mp_limb_t> c(free);
   image.residues.reserve(values.size() * image.pivots.size() *
                          static_cast<std::size_t>(problem.degree));
@@ -179,14 +180,10 @@ Image eliminate_modulo(const Problem& problem, mp_limb_t p, const FreeValues& va
       if (!rational_mod(c[f], vector[f]->value, p)) return image;
     for (std::size_t i = 0; i < image.pivots.size(); ++i) {
       nmod_poly_zero(product.value);
-      std::size_t f = 0;
-      for (int column = 0; column < columns; ++column) {
-        if (std::binary_search(image.pivots.begin(), image.pivots.end(), column)) continue;
-        if (c[f] != 0) {
-          nmod_poly_scalar_mul_nmod(factor.value, at(static_cast<int>(i), column), c[f]);
-          nmod_poly_sub(product.value, product.value, factor.value);
-        }
-        ++f;
+      for (std::size_t f = 0; f < free; ++f) {
+        if (c[f] == 0) continue;
+        nmod_poly_scalar_mul_nmod(factor.value, at(static_cast<int>(i), free_at[f]), c[f]);
+        nmod_poly_sub(product.value, product.value, factor.value);
       }
       for (int j = 0; j < problem.degree; ++j)
         image.residues.push_back(nmod_poly_get_coeff_ui(product.value, j));
@@ -194,13 +191,6 @@ Image eliminate_modulo(const Problem& problem, mp_limb_t p, const FreeValues& va
   }
   image.usable = true;
   return image;
-}
-
-std::vector<int> free_columns(const std::vector<int>& pivots, int columns) {
-  std::vector<int> f;
-  for (int c = 0; c < columns; ++c)
-    if (!std::binary_search(pivots.begin(), pivots.end(), c)) f.push_back(c);
-  return f;
 }
 
 // The rational coefficients [k][i][j] from the images by CRT and rational reconstruction; none
@@ -300,6 +290,13 @@ mp_limb_t next_prime(mp_limb_t p, const Problem& problem) {
 constexpr mp_limb_t first_prime = UWORD(1) << 62;
 
 }  // namespace
+
+std::vector<int> free_columns(const std::vector<int>& pivots, int columns) {
+  std::vector<int> f;
+  for (int c = 0; c < columns; ++c)
+    if (!std::binary_search(pivots.begin(), pivots.end(), c)) f.push_back(c);
+  return f;
+}
 
 KernelShape kernel_shape(const std::vector<std::vector<RationalPolynomial>>& rows,
                          const IntegerPolynomial& field) {

@@ -41,6 +41,9 @@ struct FieldKernel {
   std::string reason;  // why no verified basis (empty on success)
 };
 
+// The columns that are not pivots, increasing: a kernel vector is fixed by its values there.
+std::vector<int> free_columns(const std::vector<int>& pivot_columns, int columns);
+
 // `rows`: the matrix's rows, every entry an element of K (a rational polynomial, reduced modulo
 // K(t) or not). `field`: K(t), irreducible over Q.
 KernelShape kernel_shape(const std::vector<std::vector<RationalPolynomial>>& rows,
