@@ -1,4 +1,4 @@
-\\ check_exact.gp -- independent checker for tripack exact certificates (formats 1 and 2).
+\\ check_exact.gp -- independent checker for tripack exact certificates (formats 1, 2 and 3).
 \\
 \\ Written in PARI/GP only; shares no code with tripack (which writes certificates with
 \\ FLINT/Arb). It re-checks statement (I), "existence": the stated points form a packing of n
@@ -12,6 +12,9 @@
 \\  * The certificate is DATA. It is read with readstr() and parsed by the tokenizer and
 \\    recursive-descent parser below (grammar in checker/README.md); nothing of it is eval'ed
 \\    except digit-only strings (integer literals). Anything outside the grammar is "FAIL read".
+\\  * Format 3 writes the points and the stress as a(x) + s*b(x) (x = d, s = sqrt 3, deg a, b < deg P):
+\\    each is mapped into K as a(d_in_K) + sqrt3_in_K * b(d_in_K), a ring map whatever the
+\\    certificate's other values, and checked in K like a format-2 element from then on.
 \\  * Every element of K is reduced mod K (its remainder on division by K, degree < deg K) before it
 \\    is used; an identity "A = 0 in K" is decided by that exact remainder.
 \\  * Every sign is decided exactly: A reduced, A == 0 exactly, or else A(t0) != 0 (K is
@@ -147,7 +150,7 @@ ck_perr(msg) = error(Str("line ", ck_tl[ck_ti], ": ", msg, " (found ", ck_toknam
 ck_expect(k, what) = if(ck_tk[ck_ti] != k, ck_perr(Str("expected ", what))); ck_ti++;
 ck_israt(v) = my(ty = type(v)); ty == "t_INT" || ty == "t_FRAC";
 
-\\ atom := NUMBER | x | t | ( sum )
+\\ atom := NUMBER | x | t | s | ( sum )
 ck_atom() =
 {
   my(k = ck_tk[ck_ti], v);
@@ -156,11 +159,12 @@ ck_atom() =
     v = ck_tv[ck_ti];
     if(v == "t", ck_ti++; return('t));
     if(v == "x", ck_ti++; return('x));
-    ck_perr(Str("unknown identifier '", v, "' (a value may only use integers, the variables x and t, + - * / ^ and parentheses)")));
+    if(v == "s", ck_ti++; return('s));
+    ck_perr(Str("unknown identifier '", v, "' (a value may only use integers, the variables x, t and s, + - * / ^ and parentheses)")));
   if(k == 40,
     ck_depth++; if(ck_depth > ck_maxdepth, ck_perr("nesting too deep"));
     ck_ti++; v = ck_sum(); ck_expect(41, "')'"); ck_depth--; return(v));
-  ck_perr("expected a number, x, t or '('");
+  ck_perr("expected a number, x, t, s or '('");
 }
 
 \\ a value built by the parser within the bounds above, or a one-line error
@@ -426,6 +430,20 @@ r_X = 0; r_Y = 0; r_d = 0; r_d2 = 0; r_s3 = 0;
 
 ck_isKelt(v) = ck_israt(v) || (type(v) == "t_POL" && variable(v) == 't && #select(c -> !ck_israt(c), Vec(v)) == 0);
 ck_is2vec(v) = type(v) == "t_VEC" && #v == 2;
+\\ format 3: a(x) + s*b(x), a and b rationals or polynomials in x with rational coefficients of
+\\ degree < deg P (P checked to be a polynomial in x first); [a, b], or 0 when v is not of that form
+ck_isxpoly(u, m) = ck_israt(u) || (type(u) == "t_POL" && variable(u) == 'x && poldegree(u) < m && #select(c -> !ck_israt(c), Vec(u)) == 0);
+ck_tparts(v) =
+{
+  my(a, b, m = poldegree(c_P));
+  if(ck_israt(v), return([v, 0]));
+  if(type(v) != "t_POL" || #setminus(Set(variables(v)), Set(['x, 's])) || poldegree(v, 's) > 1, return(0));
+  a = polcoef(v, 0, 's); b = polcoef(v, 1, 's);
+  if(ck_isxpoly(a, m) && ck_isxpoly(b, m), [a, b], 0);
+}
+ck_isTelt(v) = !(ck_tparts(v) === 0);
+\\ an element of the certificate's format (2 and 1: of K; 3: of the tower)
+ck_iselt(v) = if(c_format == 3, ck_isTelt(v), ck_isKelt(v));
 ck_labelok(s) = my(v = Vecsmall(s)); #v >= 1 && #v <= 100 && ck_isalnum(v[1]) && v[1] != 95 && \
   #select(c -> !(ck_isalnum(c) || c == 45 || c == 46), Vec(v)) == 0;
 
@@ -450,7 +468,7 @@ ck_read() =
 ck_check_variables() =
 {
   my(missing, f = ck_get("cert_format"), req = ck_names1);
-  if(f === 2, req = setunion(req, ["coordinates_file"]));
+  if(f === 2 || f === 3, req = setunion(req, ["coordinates_file"]));
   missing = [s | s <- req, !mapisdefined(ck_V, s)];
   if(#missing,
     print("FAIL variables: the certificate does not assign ", strjoin(missing, ", "));
@@ -468,8 +486,8 @@ ck_check_structure() =
   c_tol = ck_get("given_tolerance"); c_claims = ck_get("claims"); c_stress = ck_get("stress");
   c_cfile = ck_get("coordinates_file");
   if(type(c_label) == "t_STR" && ck_labelok(c_label), ck_label = c_label);
-  if(!ck_report(c_format === 1 || c_format === 2, "format",
-      Str("cert_format = ", c_format, " (this checker reads formats 1 and 2)")), ck_finish());
+  if(!ck_report(c_format === 1 || c_format === 2 || c_format === 3, "format",
+      Str("cert_format = ", c_format, " (this checker reads formats 1, 2 and 3)")), ck_finish());
   if(c_format == 1 && mapisdefined(ck_V, "coordinates_file"),
     ck_report(0, "format", "coordinates_file is a format-2 variable; format 1 takes the coordinates file from the atlas directory");
     ck_finish());
@@ -493,7 +511,7 @@ ck_check_structure() =
   if(!(type(c_bonds) == "t_VEC" && #select(b -> !(ck_is2vec(b) && type(b[1]) == "t_INT" && type(b[2]) == "t_INT"), c_bonds) == 0),
     listput(e, "bonds is not a vector of integer pairs"));
   if(!(type(c_claims) == "t_VEC" && #select(c -> type(c) != "t_STR", c_claims) == 0), listput(e, "claims is not a vector of strings"));
-  if(c_format == 2 && !(type(c_cfile) == "t_STR" && c_cfile != "" && Vecsmall(c_cfile)[1] != 47),
+  if(c_format >= 2 && !(type(c_cfile) == "t_STR" && c_cfile != "" && Vecsmall(c_cfile)[1] != 47),
     listput(e, "coordinates_file is not a non-empty relative path"));
   if(!ck_report(#e == 0, "types", if(#e, strjoin(Vec(e), "; "), Str("every variable has the type of format ", c_format))),
     ck_skip("all further checks", "the certificate's variables do not have the types of its format"); ck_finish());
@@ -539,11 +557,11 @@ ck_check_coordinates() =
     my(p = c_points[i]);
     if(setsearch(R, i),
       if(!(ck_israt(p[1]) && ck_israt(p[2])), listput(badr, i)),
-      if(!(ck_isKelt(p[1]) && ck_isKelt(p[2])), listput(badk, i))));
+      if(!(ck_iselt(p[1]) && ck_iselt(p[2])), listput(badk, i))));
   ck_report(#badr == 0 && #badk == 0, "coordinates",
     if(#badr || #badk,
       Str(if(#badr, Str("rattlers without rational coordinates: ", Vec(badr), " "), ""),
-          if(#badk, Str("points not polynomials in t with rational coefficients: ", Vec(badk)), "")),
+          if(#badk, Str("points not ", if(c_format == 3, "a(x) + s*b(x) with a, b in Q[x] of degree < deg P", "polynomials in t with rational coefficients"), ": ", Vec(badk)), "")),
       Str(c_n - #c_rattlers, " points in K, ", #c_rattlers, " rattlers with rational coordinates")));
 }
 
@@ -645,16 +663,16 @@ ck_check_provenance_file() =
 {
   my(path, A, e = List(), bound, badg = List(), qq, atlas, mine, theirs);
   ck_prov_ok = 0;
-  path = if(c_format == 2,
+  path = if(c_format >= 2,
     if(ck_basename(c_cfile) != Str(c_label, ".txt"), listput(e, Str("coordinates_file ", c_cfile, " is not named ", c_label, ".txt")));
     Str(ck_dirname(ck_file), "/", c_cfile),
     Str(if(!(ck_atlas_opt === 0), ck_atlas_opt, Str(ck_dirname(ck_file), "/../atlas")), "/", c_label, ".txt"));
-  if(c_format == 2 && !(ck_atlas_opt === 0) && #e == 0,
+  if(c_format >= 2 && !(ck_atlas_opt === 0) && #e == 0,
     atlas = Str(ck_atlas_opt, "/", c_label, ".txt");
     mine = iferr(readstr(path), E, 0); theirs = iferr(readstr(atlas), E, 0);
     if(theirs === 0, listput(e, Str("strict mode: the atlas has no ", atlas)),
        !(mine === theirs), listput(e, Str("strict mode: coordinates_file ", c_cfile, " is not the atlas's ", atlas))));
-  if(c_format == 2 && !(ck_atlas_opt === 0), path = Str(ck_atlas_opt, "/", c_label, ".txt"));
+  if(c_format >= 2 && !(ck_atlas_opt === 0), path = Str(ck_atlas_opt, "/", c_label, ".txt"));
   ck_prov_path = path;
   if(#e, return(ck_report(0, "provenance", strjoin(Vec(e), "; "))));
   A = iferr(ck_read_atlas(path), E, return(ck_report(0, "provenance", ck_errmsg(E))));
@@ -702,6 +720,30 @@ ck_check_P() =
   ck_ok_P = (ck_nfail == f0);
 }
 
+\\ format 3: the tower element v = a(x) + s*b(x) (its form checked by "types" or "stress-format")
+\\ as an element of K, sum_k a_k d^k + b_k sqrt3 d^k with d = d_in_K and sqrt3 = sqrt3_in_K
+\\ reduced, their products d^k and sqrt3 d^k (k < deg P) computed once; formats 1 and 2: v reduced.
+ck_dpow = 0; ck_spow = 0;
+ck_tower_powers() =
+{
+  my(m = poldegree(c_P));
+  ck_dpow = vector(m); ck_dpow[1] = 1;
+  for(k = 2, m, ck_dpow[k] = ck_comb_red([[ck_dpow[k - 1], r_d]]));
+  ck_spow = vector(m, k, ck_comb_red([[ck_dpow[k], r_s3]]));
+}
+ck_elt(v) =
+{
+  my(ab, L = List());
+  if(c_format != 3, return(ck_red(v)));
+  if(ck_dpow === 0, ck_tower_powers());
+  ab = ck_tparts(v);
+  for(part = 1, 2,
+    my(u = ab[part], W = if(part == 1, ck_dpow, ck_spow));
+    if(ck_israt(u), if(u != 0, listput(L, [u, W[1]])),
+      for(k = 0, poldegree(u), my(c = polcoef(u, k)); if(c != 0, listput(L, [c, W[k + 1]])))));
+  if(#L == 0, 0, ck_comb_red(Vec(L)));
+}
+
 ck_ok_K = 0;
 ck_check_K() =
 {
@@ -718,7 +760,7 @@ ck_check_K() =
     ck_iso = if(poldegree(c_K) == 1, my(t0 = -polcoef(c_K, 0) / polcoef(c_K, 1)); [t0, t0], [c_tlow, c_thigh]);
     \\ the reduced (canonical) representatives of everything in K, used from here on
     r_d = ck_red(c_d); r_d2 = ck_comb_red([[c_d, c_d]]); r_s3 = ck_red(c_s3);
-    r_X = vector(c_n, i, ck_red(c_points[i][1])); r_Y = vector(c_n, i, ck_red(c_points[i][2])));
+    r_X = vector(c_n, i, ck_elt(c_points[i][1])); r_Y = vector(c_n, i, ck_elt(c_points[i][2])));
 }
 
 \\ --- exact identities in K -----------------------------------------------------------------------
@@ -943,9 +985,9 @@ ck_check_stress_format() =
   if(type(c_stress) != "t_VEC" || #c_stress != #c_bonds,
     return(ck_report(0, "stress-format", Str("stress is not a vector with one entry per bond (",
       if(type(c_stress) == "t_VEC", Str(#c_stress, " entries"), type(c_stress)), ", ", #c_bonds, " bonds)"))));
-  bad = [b | b <- [1 .. #c_stress], !ck_isKelt(c_stress[b])];
+  bad = [b | b <- [1 .. #c_stress], !ck_iselt(c_stress[b])];
   ck_report(#bad == 0, "stress-format",
-    if(#bad, Str(#bad, " stress entries are not polynomials in t with rational coefficients (or rationals), first for bond ", c_bonds[bad[1]]),
+    if(#bad, Str(#bad, " stress entries are not ", if(c_format == 3, "a(x) + s*b(x) with a, b in Q[x] of degree < deg P", "polynomials in t with rational coefficients (or rationals)"), ", first for bond ", c_bonds[bad[1]]),
       Str(#c_stress, " entries, one per bond, in K")));
 }
 
@@ -1029,7 +1071,7 @@ ck_check_optimality() =
     foreach(["stress-balance", "stress-positive", "rigidity"], s, ck_skip(s, "statement (I), existence, failed")); return(0));
   if(!ok,
     foreach(["stress-balance", "stress-positive", "rigidity"], s, ck_skip(s, "no valid stress")); return(0));
-  ck_r_stress = vector(#c_stress, b, ck_red(c_stress[b]));
+  ck_r_stress = vector(#c_stress, b, ck_elt(c_stress[b]));
   H = ck_held();
   G = iferr(ck_opening_matrix(H), E, ck_report(0, "stress-balance", Str("error building G: ", ck_errmsg(E))); return(0));
   ck_step(() -> iferr(ck_check_balance(H, G), E, ck_report(0, "stress-balance", Str("error: ", ck_errmsg(E)))));

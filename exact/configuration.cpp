@@ -15,6 +15,7 @@
 
 #include "exact/flint_tools.hpp"
 #include "exact/number_field.hpp"
+#include "exact/tower.hpp"
 
 namespace tripack::exact {
 
@@ -160,45 +161,6 @@ double lower_bound(const arb_t x) {
   arf_clear(bound);
   return out;
 }
-
-// Q(d, sqrt 3) as the tower Q(d)[s]/(s^2 - 3): an element a + b s with a, b in Q[d]/(P).
-struct TowerElement {
-  FmpqPoly a, b;
-};
-
-class Tower {
- public:
-  Tower(const fmpz_poly_t p, int j) : j_(j) {
-    fmpq_poly_set_fmpz_poly(p_.value, p);
-    m_ = static_cast<int>(fmpz_poly_degree(p));
-  }
-  int m() const { return m_; }
-  // out = x * (d + j s)
-  void times_theta(TowerElement& out, const TowerElement& x) const {
-    FmpqPoly d, a, b, t;
-    fmpq_poly_set_coeff_si(d.value, 1, 1);
-    // (a + b s)(d + j s) = (a d + 3 j b) + (b d + j a) s
-    fmpq_poly_mul(a.value, x.a.value, d.value);
-    fmpq_poly_scalar_mul_si(t.value, x.b.value, 3 * j_);
-    fmpq_poly_add(a.value, a.value, t.value);
-    fmpq_poly_mul(b.value, x.b.value, d.value);
-    fmpq_poly_scalar_mul_si(t.value, x.a.value, j_);
-    fmpq_poly_add(b.value, b.value, t.value);
-    fmpq_poly_rem(out.a.value, a.value, p_.value);
-    fmpq_poly_rem(out.b.value, b.value, p_.value);
-  }
-  // Entry r of the coordinate vector (a_0 .. a_{m-1}, b_0 .. b_{m-1}).
-  void coordinate(fmpq_t out, const TowerElement& x, int r) const {
-    if (r < m_)
-      fmpq_poly_get_coeff_fmpq(out, x.a.value, r);
-    else
-      fmpq_poly_get_coeff_fmpq(out, x.b.value, r - m_);
-  }
-
- private:
-  FmpqPoly p_;
-  int m_ = 0, j_ = 1;
-};
 
 // The norm of d + j sqrt 3 over Q: N(x) = A^2 - 3 B^2 where P(x - j s) = A(x) + s B(x), s^2 = 3;
 // its roots are d' +- j sqrt 3 over the roots d' of P. Primitive, positive leading coefficient.

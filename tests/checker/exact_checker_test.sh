@@ -215,7 +215,8 @@ expect "format 2 with an absolute coordinates_file" reject,fail:types "$f"
 f=$(mk f2_missing); sedit "$f" 's/^cert_format = 1;/cert_format = 2;/'; expect "format 2 without coordinates_file" reject,fail:variables "$f"
 f=$(mk f1_cfile); sedit "$f" 's/^cert_format = 1;/cert_format = 1; coordinates_file = "..\/atlas\/t10a.txt";/'
 expect "format 1 with coordinates_file" reject,fail:format "$f"
-f=$(mk f3); sedit "$f" 's/^cert_format = 1;/cert_format = 3;/'; expect "cert_format = 3" reject,fail:format "$f"
+f=$(mk f4); sedit "$f" 's/^cert_format = 1;/cert_format = 4;/'; expect "cert_format = 4" reject,fail:format "$f"
+f=$(mk f3_missing); sedit "$f" 's/^cert_format = 1;/cert_format = 3;/'; expect "format 3 without coordinates_file" reject,fail:variables "$f"
 f=$(mk f2_ok); sedit "$f" 's/^cert_format = 1;/cert_format = 2; coordinates_file = "..\/atlas\/t10a.txt";/'
 expect "t10a as format 2" accept-slo,pass:provenance "$f"
 # strict mode (--atlas DIR): a format-2 certificate's coordinate file must be DIR/LABEL.txt's
@@ -237,6 +238,34 @@ expect "t10a with --atlas=data/atlas" accept-slo --atlas="$root/data/atlas" "$tm
 f=$(mk b_sed); sedit "$f" 's/^bonds = \[\[1, 3\], /bonds = [/'; expect "(b) t10a.gp, bond [1, 3] deleted by sed" reject,fail:separation "$f"
 f=$(mk c_sed); sedit "$f" '0,/^  2600154457184653\/2251799813685248\*t - 9355553898240397\/6755399441055744,$/s//  0,/'
 expect "(c) t10a.gp, first stress entry set to 0 by sed" reject,fail:stress-positive "$f"
+# format 3 (points and stress as a(x) + s*b(x), mapped into K): the hand-made
+# optimum/n6_delta3_f3.gp (P of degree 1) and tripack's data/exact/t17b.gp (P of degree 2)
+# mk3 NAME FIXTURE LABEL ATLASFILE: a copy NAME/exact/LABEL.gp naming ../atlas/LABEL.txt
+mk3() {
+  local d=$tmp/txt/$1
+  mkdir -p "$d/exact" "$d/atlas"
+  sed 's|^coordinates_file = .*|coordinates_file = "../atlas/'"$3"'.txt";|' "$2" >"$d/exact/$3.gp"
+  cp "$4" "$d/atlas/$3.txt"
+  echo "$d/exact/$3.gp"
+}
+n6f3() { mk3 "$1" "$DATA/optimum/n6_delta3_f3.gp" n6-delta3-slo "$ATLAS/n6-delta3-slo.txt"; }
+t17f3() { mk3 "$1" "$root/data/exact/t17b.gp" t17b "$root/data/atlas/t17b.txt"; }
+f=$(n6f3 f3_ok); expect "format 3: n6_delta3_f3 as it is" accept-slo,pass:provenance "$f"
+f=$(t17f3 f3_t17b); expect "format 3: t17b as it is" accept-slo,pass:provenance,pass:bond-identities "$f"
+f=$(mk f1_s); cp "$DATA/optimum/n6_delta3_slo.gp" "$f"; cp "$ATLAS/n6-delta3-slo.txt" "${f%/exact/t10a.gp}/atlas/n6-delta3-slo.txt"
+sedit "$f" 's|\[1/4, t/2\]|[1/4, s/4]|'; expect "format 1 with s in a point" reject,fail:coordinates "$f"
+f=$(n6f3 f3_t); sedit "$f" 's|\[1/4, s/4\]|[1/4, t/2]|'; expect "format 3 with t in a point" reject,fail:coordinates "$f"
+f=$(n6f3 f3_xdeg); sedit "$f" 's|\[1/2, 0\]|[x, 0]|'; expect "format 3: x^1 with deg P = 1 (its value d = 1/2 is right)" reject,fail:coordinates "$f"
+f=$(n6f3 f3_s2); sedit "$f" 's|\[1/2, 0\]|[s^2/6, 0]|'; expect "format 3: s^2 (its value 1/2 is right)" reject,fail:coordinates "$f"
+f=$(n6f3 f3_moved); sedit "$f" 's|\[1/4, s/4\]|[1/4, s/4 + 1/10^40]|'; expect "format 3: a point moved by 1e-40" reject,fail:bond-identities "$f"
+f=$(n6f3 f3_neg); sedit "$f" '0,/s\/2, s\/2/s//-s\/2, s\/2/'; expect "format 3: a wall stress negated" reject,fail:stress-positive "$f"
+f=$(n6f3 f3_sdeg); sedit "$f" '0,/s\/2, s\/2/s//s\/2*x, s\/2/'; expect "format 3: a stress entry of x-degree 1" reject,fail:stress-format "$f"
+f=$(n6f3 f3_msqrt3); sedit "$f" 's|^sqrt3_in_K = 2\*t;|sqrt3_in_K = -2*t;|'; expect "format 3: s mapped to -sqrt(3)" reject,fail:sqrt3-sign "$f"
+f=$(t17f3 f3_t17b_deg); sedit "$f" 's|^  \[1/2, -1/2\*s\*(2\*x - 1)\],|  [1/2 + (124*x^2 - 69*x + 9), -1/2*s*(2*x - 1)],|'
+expect "format 3: t17b's first x plus P(x), degree 2 = deg P (the same value)" reject,fail:coordinates "$f"
+f=$(t17f3 f3_t17b_moved); sedit "$f" 's|^  \[1/2, -1/2\*s\*(2\*x - 1)\],|  [1/2 + 1/10^40, -1/2*s*(2*x - 1)],|'
+expect "format 3: t17b's first point moved by 1e-40" reject,fail:bond-identities "$f"
+f=$(t17f3 f3_t17b_stress); sedit "$f" 's|^  -414720\*(|  414720*(|'; expect "format 3: t17b's first stress entry's a(x) negated" reject,fail:stress-balance "$f"
 [ -e /tmp/exact_checker_pwned ] && bad "a certificate executed system()"
 
 # ---------------------------------------------------------------------------------------------
