@@ -959,6 +959,9 @@ ck_check_inequalities() =
 
 ck_held() = my(R = Set(c_rattlers)); [i | i <- [1 .. c_n], !setsearch(R, i)];
 
+\\ G over K as a dense matrix of t_POLMODs, for the fallback of ck_check_rigidity only: the checks
+\\ below work from G's rows as they come from the points (at t198a, 500 bonds x 390 columns of
+\\ field elements of 300 kB each do not fit in gp's 4 GB stack).
 ck_opening_matrix(H) =
 {
   my(col = vector(c_n), G, s3 = Mod(r_s3, ck_K), z = Mod(0, ck_K), one = Mod(1, ck_K));
@@ -975,6 +978,26 @@ ck_opening_matrix(H) =
     G[b, ci] = -s3; G[b, ci + 1] = -one));
   G;
 }
+
+\\ G's row b: its columns, and its entry in column k (an unreduced difference of reduced elements
+\\ of K, built when used): a pair bond [i, j] has (x_i - x_j, y_i - y_j) in i's columns and the
+\\ negative in j's; a wall bond the inward normal in i's columns. col: disk -> its index among the
+\\ held disks.
+ck_opening_cols(b, col) =
+{
+  my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1);
+  if(j > 0, [ci, ci + 1, 2 * col[j] - 1, 2 * col[j]], j == -1, [ci + 1], [ci, ci + 1]);
+}
+ck_opening_entry(b, col, k) =
+{
+  my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1);
+  if(j > 0, my(cj = 2 * col[j] - 1);
+    if(k == ci, r_X[i] - r_X[j], k == ci + 1, r_Y[i] - r_Y[j], k == cj, r_X[j] - r_X[i], r_Y[j] - r_Y[i]),
+    j == -1, 1,
+    k == ci + 1, -1,
+    j == -2, r_s3, -r_s3);
+}
+ck_columns(H) = my(col = vector(c_n)); for(k = 1, #H, col[H[k]] = k); col;
 
 ck_r_stress = 0;
 ck_check_stress_format() =
@@ -993,11 +1016,13 @@ ck_check_stress_format() =
 
 \\ G^T f, one entry per column of G, from G's nonzero entries only (at most 4 per bond, where the
 \\ dense product would multiply every zero of G as a t_POLMOD)
-ck_check_balance(H, G) =
+ck_check_balance(H) =
 {
-  my(sz = matsize(G), T = vector(sz[2], k, List()), r, bad);
-  for(b = 1, sz[1], for(k = 1, sz[2], my(g = G[b, k]); if(g != 0, listput(T[k], [lift(g), ck_r_stress[b]]))));
-  r = vector(sz[2], k, ck_comb_red(Vec(T[k])));
+  my(col = ck_columns(H), T = vector(2 * #H, k, List()), r, bad);
+  \\ per column, the bonds that touch it (an index, not the entries: each entry is built when its
+  \\ column's equation is summed, then dropped)
+  for(b = 1, #c_bonds, foreach(ck_opening_cols(b, col), k, listput(T[k], b)));
+  r = vector(2 * #H, k, ck_comb_red(vector(#T[k], m, my(b = T[k][m]); [ck_opening_entry(b, col, k), ck_r_stress[b]])));
   bad = [k | k <- [1 .. #r], r[k] != 0];
   ck_report(#bad == 0, "stress-balance",
     if(#bad, Str(#bad, " of ", #r, " equations of G^T stress = 0 fail in Q[t]/(K), first at point ", H[(bad[1] + 1) \ 2],
@@ -1022,14 +1047,17 @@ ck_check_positive() =
 }
 
 \\ A lower bound for rank_K(G), exact, from a prime ideal of degree 1: a prime p (not dividing the
-\\ leading coefficient of K's integral multiple Kz nor any denominator in G) and a root r of Kz mod
-\\ p. Then t -> r is a ring homomorphism from Z_(p)[t]/(Kz) (which contains every entry of G and
+\\ leading coefficient of K's integral multiple Kz nor any denominator of the held points and of
+\\ sqrt3_in_K, reduced) and a root r of Kz mod p. Then t -> r is a ring homomorphism from
+\\ Z_(p)[t]/(Kz) (which contains those elements, hence every entry of G, their differences, and
 \\ lies in Q[t]/(K)) onto F_p, so a minor of G that is nonzero mod (p, t - r) is nonzero in K:
-\\ rank_K(G) >= rank_Fp(G mod (p, t - r)). Returns [rank mod p, p, r] or 0 (no usable prime).
-ck_rank_mod(G) =
+\\ rank_K(G) >= rank_Fp(G mod (p, t - r)). G mod (p, t - r) is built from the images of the points
+\\ (2h evaluations, not one per entry). Returns [rank mod p, p, r] or 0 (no usable prime).
+ck_rank_mod(H) =
 {
-  my(Kz = c_K / content(c_K), den = 1, p = 2^61, r, Gp, e, sz = matsize(G));
-  for(i = 1, sz[1], for(j = 1, sz[2], e = lift(G[i, j]); if(e != 0, den = lcm(den, denominator(content(e))))));
+  my(Kz = c_K / content(c_K), den = 1, p = 2^61, r, Gp, ev, X, Y, S, col = ck_columns(H));
+  foreach(concat([r_s3], concat(vector(#H, k, r_X[H[k]]), vector(#H, k, r_Y[H[k]]))), e,
+    den = lcm(den, denominator(content(e))));
   for(k = 1, 60,
     p = nextprime(p + 1);
     if(pollead(Kz) % p == 0 || den % p == 0, next);
@@ -1038,7 +1066,16 @@ ck_rank_mod(G) =
     if(#r == 0, next);
     r = r[1];
     if(subst(Kz, 't, r) != 0, next);           \\ r is checked to be a root of Kz mod p
-    Gp = matrix(sz[1], sz[2], i, j, e = lift(G[i, j]); if(type(e) == "t_POL", subst(e, 't, r), e * Mod(1, p)));
+    ev = (e -> if(type(e) == "t_POL", subst(e, 't, r), e * Mod(1, p)));
+    X = vector(c_n, i, if(col[i], ev(r_X[i]), 0)); Y = vector(c_n, i, if(col[i], ev(r_Y[i]), 0)); S = ev(r_s3);
+    Gp = matrix(#c_bonds, 2 * #H, i, j, Mod(0, p));
+    for(b = 1, #c_bonds,
+      my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1, cj);
+      if(j > 0, cj = 2 * col[j] - 1;
+        Gp[b, ci] = X[i] - X[j]; Gp[b, ci + 1] = Y[i] - Y[j]; Gp[b, cj] = X[j] - X[i]; Gp[b, cj + 1] = Y[j] - Y[i],
+        j == -1, Gp[b, ci + 1] = Mod(1, p),
+        j == -2, Gp[b, ci] = S; Gp[b, ci + 1] = Mod(-1, p),
+        Gp[b, ci] = -S; Gp[b, ci + 1] = Mod(-1, p)));
     return([matrank(Gp), p, lift(r)]));
   0;
 }
@@ -1046,17 +1083,17 @@ ck_rank_mod(G) =
 \\ G has full column rank 2h over K: first the modular lower bound (fast), else matrank of the
 \\ t_POLMOD matrix (Gaussian elimination in the field Q[t]/(K), K irreducible by K-irreducible).
 \\ h >= 1 and every held disk in a bond.
-ck_check_rigidity(H, G) =
+ck_check_rigidity(H) =
 {
   my(deg = vector(c_n), lone, rk, m, how);
   foreach(c_bonds, b, deg[b[1]]++; if(b[2] > 0, deg[b[2]]++));
   lone = [i | i <- H, deg[i] == 0];
   if(#H < 1, return(ck_report(0, "rigidity", "no held disk (h = 0)")));
   if(#lone, return(ck_report(0, "rigidity", Str(#lone, " held disks without any bond (G has a zero column), first ", lone[1]))));
-  m = ck_rank_mod(G);
+  m = ck_rank_mod(H);
   if(!(m === 0) && m[1] == 2 * #H,
     rk = m[1]; how = Str("a 2h x 2h minor of G is nonzero modulo the prime ideal (p, t - r) of K, p = ", m[2], ", r = ", m[3], ", so it is nonzero in K"),
-    rk = matrank(G); how = Str("matrank over Q[t]/(K)", if(!(m === 0), Str(" (the rank modulo p = ", m[2], " was ", m[1], ", only a lower bound)"), "")));
+    rk = matrank(ck_opening_matrix(H)); how = Str("matrank over Q[t]/(K)", if(!(m === 0), Str(" (the rank modulo p = ", m[2], " was ", m[1], ", only a lower bound)"), "")));
   ck_report(rk == 2 * #H, "rigidity",
     Str("rank of G over K = ", rk, if(rk == 2 * #H, " = ", " < "), "2h = ", 2 * #H,
       " (", #c_bonds, " bonds x ", 2 * #H, " coordinates, exact: ", how, if(rk == 2 * #H, "; G is injective)", "; G is NOT injective: some motion of the held disks changes no bond at first order, so the stress proves nothing)")));
@@ -1064,7 +1101,7 @@ ck_check_rigidity(H, G) =
 
 ck_check_optimality() =
 {
-  my(f0 = ck_nfail, ok, H, G);
+  my(f0 = ck_nfail, ok, H);
   if(!ck_claim_slo, return(0));
   ok = ck_check_stress_format();
   if(f0 > 0,
@@ -1073,10 +1110,9 @@ ck_check_optimality() =
     foreach(["stress-balance", "stress-positive", "rigidity"], s, ck_skip(s, "no valid stress")); return(0));
   ck_r_stress = vector(#c_stress, b, ck_elt(c_stress[b]));
   H = ck_held();
-  G = iferr(ck_opening_matrix(H), E, ck_report(0, "stress-balance", Str("error building G: ", ck_errmsg(E))); return(0));
-  ck_step(() -> iferr(ck_check_balance(H, G), E, ck_report(0, "stress-balance", Str("error: ", ck_errmsg(E)))));
+  ck_step(() -> iferr(ck_check_balance(H), E, ck_report(0, "stress-balance", Str("error: ", ck_errmsg(E)))));
   ck_step(() -> iferr(ck_check_positive(), E, ck_report(0, "stress-positive", Str("error: ", ck_errmsg(E)))));
-  ck_step(() -> iferr(ck_check_rigidity(H, G), E, ck_report(0, "rigidity", Str("error: ", ck_errmsg(E)))));
+  ck_step(() -> iferr(ck_check_rigidity(H), E, ck_report(0, "rigidity", Str("error: ", ck_errmsg(E)))));
 }
 
 ck_t_start = getabstime();
