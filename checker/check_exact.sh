@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Check exact certificates (formats 1 and 2) with the independent PARI/GP checker check_exact.gp.
+# Check exact certificates (formats 1, 2 and 3) with the independent PARI/GP checker check_exact.gp.
 # Usage: checker/check_exact.sh [--atlas DIR] [--time-limit S] CERT.gp [CERT.gp ...]
 #   --atlas DIR  strict mode: every certificate's coordinate file is the atlas's DIR/LABEL.txt (a
-#                format-2 certificate's coordinates_file must hold exactly its lines). Without it,
-#                format 1 reads <the certificate's directory>/../atlas/LABEL.txt and format 2 the
+#                format-2 or -3 certificate's coordinates_file must hold exactly its lines). Without
+#                it, format 1 reads <the certificate's directory>/../atlas/LABEL.txt and formats 2, 3 the
 #                file it names (coordinates_file, relative to its own directory).
 #   --time-limit S  seconds each certificate may take (default 600; the largest real one takes
 #                about 20 s); past it the certificate is rejected.
