@@ -45,7 +45,7 @@ while read -r line; do problem "$line"; done <"$logs/csv-mismatch"
 
 start=$(date +%s)
 printf '%s\n' "${certificates[@]}" |
-  xargs -P 2 -I{} sh -c 'bash "$1/checker/check_exact.sh" --atlas "$1/data/atlas" "$2" >"$3/$(basename "$2" .gp).log" 2>&1' _ "$root" {} "$logs"
+  xargs -P 2 -I{} sh -c 'bash "$1/checker/check_exact.sh" --atlas "$1/data/atlas" --time-limit 1800 "$2" >"$3/$(basename "$2" .gp).log" 2>&1' _ "$root" {} "$logs"
 wall=$(( $(date +%s) - start ))
 
 accepted=0
