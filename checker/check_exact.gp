@@ -962,22 +962,7 @@ ck_held() = my(R = Set(c_rattlers)); [i | i <- [1 .. c_n], !setsearch(R, i)];
 \\ G over K as a dense matrix of t_POLMODs, for the fallback of ck_check_rigidity only: the checks
 \\ below work from G's rows as they come from the points (at t198a, 500 bonds x 390 columns of
 \\ field elements of 300 kB each do not fit in gp's 4 GB stack).
-ck_opening_matrix(H) =
-{
-  my(col = vector(c_n), G, s3 = Mod(r_s3, ck_K), z = Mod(0, ck_K), one = Mod(1, ck_K));
-  for(k = 1, #H, col[H[k]] = k);
-  G = matrix(#c_bonds, 2 * #H, r, c, z);
-  for(b = 1, #c_bonds,
-    my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1, cj, dx, dy);
-    if(j > 0,
-      cj = 2 * col[j] - 1;
-      dx = Mod(r_X[i] - r_X[j], ck_K); dy = Mod(r_Y[i] - r_Y[j], ck_K);
-      G[b, ci] = dx; G[b, ci + 1] = dy; G[b, cj] = -dx; G[b, cj + 1] = -dy,
-    j == -1, G[b, ci + 1] = one,
-    j == -2, G[b, ci] = s3; G[b, ci + 1] = -one,
-    G[b, ci] = -s3; G[b, ci + 1] = -one));
-  G;
-}
+ck_opening_matrix(H) = ck_opening_from(H, apply(e -> Mod(e, ck_K), r_X), apply(e -> Mod(e, ck_K), r_Y), Mod(r_s3, ck_K), Mod(1, ck_K));
 
 \\ G's row b: its columns, and its entry in column k (an unreduced difference of reduced elements
 \\ of K, built when used): a pair bond [i, j] has (x_i - x_j, y_i - y_j) in i's columns and the
@@ -988,14 +973,21 @@ ck_opening_cols(b, col) =
   my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1);
   if(j > 0, [ci, ci + 1, 2 * col[j] - 1, 2 * col[j]], j == -1, [ci + 1], [ci, ci + 1]);
 }
-ck_opening_entry(b, col, k) =
+ck_opening_entry(b, col, k, X = r_X, Y = r_Y, S = r_s3, one = 1) =
 {
   my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1);
   if(j > 0, my(cj = 2 * col[j] - 1);
-    if(k == ci, r_X[i] - r_X[j], k == ci + 1, r_Y[i] - r_Y[j], k == cj, r_X[j] - r_X[i], r_Y[j] - r_Y[i]),
-    j == -1, 1,
-    k == ci + 1, -1,
-    j == -2, r_s3, -r_s3);
+    if(k == ci, X[i] - X[j], k == ci + 1, Y[i] - Y[j], k == cj, X[j] - X[i], Y[j] - Y[i]),
+    j == -1, one,
+    k == ci + 1, -one,
+    j == -2, S, -S);
+}
+\\ G with its entries from the points' values X, Y and sqrt 3's S (in K, or their images mod p)
+ck_opening_from(H, X, Y, S, one) =
+{
+  my(col = ck_columns(H), G = matrix(#c_bonds, 2 * #H, r, c, 0 * one));
+  for(b = 1, #c_bonds, foreach(ck_opening_cols(b, col), k, G[b, k] = ck_opening_entry(b, col, k, X, Y, S, one)));
+  G;
 }
 ck_columns(H) = my(col = vector(c_n)); for(k = 1, #H, col[H[k]] = k); col;
 
@@ -1068,14 +1060,7 @@ ck_rank_mod(H) =
     if(subst(Kz, 't, r) != 0, next);           \\ r is checked to be a root of Kz mod p
     ev = (e -> if(type(e) == "t_POL", subst(e, 't, r), e * Mod(1, p)));
     X = vector(c_n, i, if(col[i], ev(r_X[i]), 0)); Y = vector(c_n, i, if(col[i], ev(r_Y[i]), 0)); S = ev(r_s3);
-    Gp = matrix(#c_bonds, 2 * #H, i, j, Mod(0, p));
-    for(b = 1, #c_bonds,
-      my(i = c_bonds[b][1], j = c_bonds[b][2], ci = 2 * col[i] - 1, cj);
-      if(j > 0, cj = 2 * col[j] - 1;
-        Gp[b, ci] = X[i] - X[j]; Gp[b, ci + 1] = Y[i] - Y[j]; Gp[b, cj] = X[j] - X[i]; Gp[b, cj + 1] = Y[j] - Y[i],
-        j == -1, Gp[b, ci + 1] = Mod(1, p),
-        j == -2, Gp[b, ci] = S; Gp[b, ci + 1] = Mod(-1, p),
-        Gp[b, ci] = -S; Gp[b, ci + 1] = Mod(-1, p)));
+    Gp = ck_opening_from(H, X, Y, S, Mod(1, p));
     return([matrank(Gp), p, lift(r)]));
   0;
 }
